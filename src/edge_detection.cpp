@@ -1,0 +1,54 @@
+#include "edge_detection.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <opencv2/imgproc.hpp>
+
+namespace projtrack {
+
+namespace {
+
+cv::Mat wrap(const ImageView& v) {
+  // cv::Mat has no const view; the input is only ever read.
+  return cv::Mat(v.height, v.width, CV_8UC1, const_cast<std::uint8_t*>(v.data),
+                 static_cast<std::size_t>(v.stride));
+}
+
+ImageView view_of(const cv::Mat& m) {
+  return ImageView(m.data, m.cols, m.rows, static_cast<std::ptrdiff_t>(m.step));
+}
+
+}  // namespace
+
+ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params) {
+  if (!gray.valid()) return {};
+  if (params.detector == EdgeDetector::Input) return gray;
+
+  cv::Mat src = wrap(gray);
+  const int passes = std::clamp(params.blur, 0, kMaxBlurPasses);
+  for (int i = 0; i < passes; ++i) {
+    cv::blur(src, blurred_[i % 2], cv::Size(3, 3), cv::Point(-1, -1), cv::BORDER_REPLICATE);
+    src = blurred_[i % 2];
+  }
+  const double low = std::max(0.0, params.low);
+  const double high = std::max(0.0, params.high);
+
+  if (params.detector == EdgeDetector::Canny) {
+    cv::Canny(src, edges_, low, high, 3, false);
+    return view_of(edges_);
+  }
+  cv::Sobel(src, gx_, CV_16S, 1, 0, 3, 1, 0, cv::BORDER_REPLICATE);
+  cv::Sobel(src, gy_, CV_16S, 0, 1, 3, 1, 0, cv::BORDER_REPLICATE);
+  edges_.create(src.rows, src.cols, CV_8UC1);
+  const int threshold = static_cast<int>(std::min(low, 1e9));
+  for (int y = 0; y < src.rows; ++y) {
+    const std::int16_t* dx = gx_.ptr<std::int16_t>(y);
+    const std::int16_t* dy = gy_.ptr<std::int16_t>(y);
+    std::uint8_t* e = edges_.ptr<std::uint8_t>(y);
+    for (int x = 0; x < src.cols; ++x)
+      e[x] = std::abs(dx[x]) + std::abs(dy[x]) >= threshold ? 255 : 0;
+  }
+  return view_of(edges_);
+}
+
+}  // namespace projtrack

@@ -1,0 +1,43 @@
+// Edge detection into a reusable edge map (non-zero = edge), the estimators' input.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "image_view.hpp"
+
+namespace projtrack {
+
+enum class EdgeDetector {
+  Canny,  // cv::Canny with hysteresis thresholds low/high (L1 gradient, 3×3 Sobel aperture)
+  Sobel,  // |Gx| + |Gy| of the 3×3 Sobel >= low: thick edges, as the original system used
+  Input,  // the image already is an edge map: non-zero = edge (read in place, never copied)
+};
+
+inline constexpr int kMaxBlurPasses = 16;
+
+struct EdgeParams {
+  EdgeDetector detector = EdgeDetector::Canny;
+  // Gradient thresholds on the |Gx| + |Gy| scale of a 3×3 Sobel, where a step of contrast C
+  // (grey levels) scores 4·C. Canny: hysteresis (swapped if low > high). Sobel: `low` only.
+  double low = 50;
+  double high = 150;
+  int blur = 1;  // 3×3 box-blur passes before detecting (0 = none; the original system used 2)
+};
+
+// Owns the edge and blur buffers and reuses them: after the first frame of a given size, detect()
+// does not allocate.
+class EdgeMap {
+ public:
+  // Detects the edges of `gray` and returns a view of them, valid until the next call (or, for
+  // EdgeDetector::Input, as long as `gray`'s pixels). An empty or invalid `gray` gives an empty
+  // view; out-of-range parameters are clamped (negative thresholds to 0, blur to
+  // [0, kMaxBlurPasses]).
+  ImageView detect(const ImageView& gray, const EdgeParams& params);
+
+ private:
+  cv::Mat blurred_[2];
+  cv::Mat gx_, gy_;
+  cv::Mat edges_;
+};
+
+}  // namespace projtrack

@@ -1,0 +1,84 @@
+#include "estimator.hpp"
+
+#include "grid_filling.hpp"
+#include "inner_point.hpp"
+#include "iterative_ray_casting.hpp"
+#include "pixel_filling.hpp"
+#include "rasterized_ray_casting.hpp"
+#include "ray_casting.hpp"
+#include "recursive_ray_casting.hpp"
+
+namespace projtrack {
+
+namespace {
+
+Status border_status(const Rect& bbox, int width, int height) {
+  const bool left = bbox.x <= 0, top = bbox.y <= 0;
+  const bool right = bbox.right() >= width, bottom = bbox.bottom() >= height;
+  if (left && top && right && bottom) return Status::CoversFrame;
+  if (left || top || right || bottom) return Status::ReachedBorder;
+  return Status::Ok;
+}
+
+}  // namespace
+
+Features Estimator::estimate(const ImageView& edges, Point2i inner_point, const Params& params,
+                             Trace* trace) {
+  Features f;
+  f.seed = f.inner_point = inner_point;
+  if (trace) trace->clear();
+  if (edges.empty()) {
+    f.status = Status::EmptyImage;
+    f.detail = "the edge map has no pixels";
+    return f;
+  }
+  if (!edges.valid()) {
+    f.status = Status::InvalidImage;
+    f.detail = "stride " + std::to_string(edges.stride) + " is smaller than width " +
+               std::to_string(edges.width);
+    return f;
+  }
+  if (std::string why = validate(params); !why.empty()) {
+    f.status = Status::InvalidParameters;
+    f.detail = std::move(why);
+    return f;
+  }
+  const std::optional<Point2i> seed = nearest_free_pixel(edges, inner_point, params.seed_radius);
+  if (!seed) {
+    const bool outside = !edges.contains(inner_point.x, inner_point.y);
+    f.status = outside ? Status::InnerPointOutside : Status::InnerPointOnEdge;
+    f.detail = outside ? "no free pixel of the frame within the seed radius of the inner point"
+                       : "the inner point and every pixel within the seed radius are edges";
+    return f;
+  }
+  f.seed = f.inner_point = *seed;
+  fan_.set_count(params.rays);
+  Work work;
+  run(Context{edges, params, fan_, trace}, f, work);
+  f.inner_point =
+      update_inner_point(edges, f.inner_point, f.centroid, fan_, update_hits_, work, trace, 0);
+  f.status = border_status(f.bbox, edges.width, edges.height);
+  f.rays_cast = work.rays;
+  f.pixels_visited = work.pixels;
+  return f;
+}
+
+std::unique_ptr<Estimator> make_estimator(Method m) {
+  switch (m) {
+    case Method::RayCasting:
+      return std::make_unique<RayCasting>();
+    case Method::IterativeRayCasting:
+      return std::make_unique<IterativeRayCasting>();
+    case Method::RecursiveRayCasting:
+      return std::make_unique<RecursiveRayCasting>();
+    case Method::RasterizedRayCasting:
+      return std::make_unique<RasterizedRayCasting>();
+    case Method::PixelFilling:
+      return std::make_unique<PixelFilling>();
+    case Method::GridFilling:
+      return std::make_unique<GridFilling>();
+  }
+  return nullptr;
+}
+
+}  // namespace projtrack

@@ -1,0 +1,78 @@
+// The common interface of the six estimators.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "convergence.hpp"
+#include "features.hpp"
+#include "image_view.hpp"
+#include "inner_point.hpp"
+#include "method.hpp"
+#include "params.hpp"
+#include "rays.hpp"
+#include "trace.hpp"
+
+namespace projtrack {
+
+// An estimator keeps scratch buffers between calls (so steady-state calls do not allocate): use
+// one instance per stream, from one thread at a time.
+class Estimator {
+ public:
+  virtual ~Estimator() = default;
+  virtual Method method() const = 0;
+
+  // Estimates the projection features of the object around `inner_point` from `edges` (non-zero
+  // = edge), then updates the inner point for the next frame. Never throws on bad input: the
+  // status says what was wrong (see status.hpp). Fills `trace` when one is given.
+  Features estimate(const ImageView& edges, Point2i inner_point, const Params& params,
+                    Trace* trace = nullptr);
+
+ protected:
+  struct Context {
+    const ImageView& edges;  // valid, non-empty
+    const Params& params;    // validated
+    const RayFan& fan;       // params.rays directions
+    Trace* trace;            // may be null
+  };
+  // The method proper, called with `out.seed` a free pixel and `out.inner_point` == `out.seed`.
+  // Sets centroid, area, bbox and iterations, and leaves `out.inner_point` where the method's own
+  // iterations moved it; the common inner-point update runs afterwards.
+  virtual void run(const Context& ctx, Features& out, Work& work) = 0;
+
+  // The loop of the iterative methods. estimate(p, i) casts from p in iteration i and returns the
+  // centroid (setting out.area when it has one per iteration); the inner point then walks toward
+  // the centroid and, when `recentre`, is recentred on the mean of n ray hits (the paper does so
+  // inside the loop for the n^y variants). Stops by the convergence rule or at max_iterations.
+  template <class Estimate>
+  void iterate(const Context& ctx, Features& out, Work& work, bool recentre, Estimate&& estimate);
+
+ private:
+  RayFan fan_;
+  std::vector<RayHit> update_hits_;
+};
+
+template <class Estimate>
+void Estimator::iterate(const Context& ctx, Features& out, Work& work, bool recentre,
+                        Estimate&& estimate) {
+  Point2i p = out.seed;
+  Point2d c_prev = to_double(p);
+  for (int it = 1; it <= ctx.params.max_iterations; ++it) {
+    const Point2d c = estimate(p, it);
+    out.centroid = c;
+    out.iterations = it;
+    if (ctx.trace) ctx.trace->iterations.push_back({p, c, out.area});
+    const Point2i next =
+        recentre ? update_inner_point(ctx.edges, p, c, ctx.fan, update_hits_, work, ctx.trace, it)
+                 : move_toward(ctx.edges, p, round_to_pixel(c), work);
+    const bool done = converged(p, next, c_prev, c, ctx.params.convergence);
+    p = next;
+    c_prev = c;
+    if (done) break;
+  }
+  out.inner_point = p;
+}
+
+std::unique_ptr<Estimator> make_estimator(Method m);
+
+}  // namespace projtrack

@@ -1,0 +1,21 @@
+// Iterative n-ray-casting: cast, move the inner point toward the centroid, repeat.
+#pragma once
+
+#include <vector>
+
+#include "estimator.hpp"
+
+namespace projtrack {
+
+class IterativeRayCasting final : public Estimator {
+ public:
+  Method method() const override { return Method::IterativeRayCasting; }
+
+ protected:
+  void run(const Context& ctx, Features& out, Work& work) override;
+
+ private:
+  std::vector<RayHit> hits_;
+};
+
+}  // namespace projtrack

@@ -1,0 +1,33 @@
+// The estimators' parameters, their defaults and their valid ranges.
+#pragma once
+
+#include <string>
+
+namespace projtrack {
+
+// Defaults: the paper's figures (32 rays, 16^2 recursion shown with n = 16, 8-rasterization,
+// 8-grid) and the original system's iteration rule (stop when the inner point moves < 2 px, or
+// after 10 iterations). The benchmark (bench/) is where these get tuned by measurement.
+struct Params {
+  int rays = 32;             // n: rays per cast, evenly spread in angle          [3, 1024]
+  int recursion = 2;         // y: levels of re-casting from hit points (n^y)     [1, 4]
+  int block_size = 8;        // m of m-rasterization, px                          [1, 65536]
+  int grid_size = 8;         // m of m-grid-filling, px                           [1, 65536]
+  int max_iterations = 10;   // cap for the iterative methods                     [1, 1000]
+  double convergence = 2.0;  // stop iterating when inner point and centroid move less, px [0, 1e6]
+  int seed_radius = 4;       // how far to look for a free pixel around the inner point, px [0, 64]
+};
+
+inline constexpr int kMinRays = 3, kMaxRays = 1024;
+inline constexpr int kMinRecursion = 1, kMaxRecursion = 4;
+inline constexpr int kMaxCellSize = 65536;
+inline constexpr int kMaxIterations = 1000;
+inline constexpr double kMaxConvergence = 1e6;
+inline constexpr int kMaxSeedRadius = 64;
+// n^y is capped so one cast stays bounded: 1024^1, 1024^2 = 1M ... are refused above this.
+inline constexpr long long kMaxRaysPerCast = 1 << 20;
+
+// Empty when every parameter is in range; otherwise says which one is not, and why.
+std::string validate(const Params& p);
+
+}  // namespace projtrack

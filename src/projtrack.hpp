@@ -1,0 +1,12 @@
+// libprojtrack: the whole public API in one include.
+#pragma once
+
+#include "edge_detection.hpp"
+#include "estimator.hpp"
+#include "features.hpp"
+#include "geometry.hpp"
+#include "image_view.hpp"
+#include "method.hpp"
+#include "params.hpp"
+#include "status.hpp"
+#include "trace.hpp"

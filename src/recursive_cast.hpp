@@ -1,0 +1,59 @@
+// The n^y cast shared by recursive and rasterized ray-casting.
+#pragma once
+
+#include <vector>
+
+#include "rays.hpp"
+#include "trace.hpp"
+
+namespace projtrack {
+
+// Casts n rays from the origin, then n from each hit (from its last free pixel), y levels deep:
+// n^y rays in the last level. Keeps the last level's fans: origins() and hits(), fan k being
+// hits()[k*n .. k*n+n).
+class RecursiveCast {
+ public:
+  // Returns the mean of the last level's hit points. visit(x, y) sees every pixel every ray
+  // runs through, at every level.
+  template <class Visit>
+  Point2d cast(const ImageView& edges, Point2i origin, const RayFan& fan, int levels, Work& work,
+               Trace* trace, int iteration, Visit&& visit);
+
+  const std::vector<Point2i>& origins() const { return origins_; }
+  const std::vector<RayHit>& hits() const { return hits_; }
+
+ private:
+  std::vector<Point2i> origins_, next_;
+  std::vector<RayHit> hits_;
+};
+
+template <class Visit>
+Point2d RecursiveCast::cast(const ImageView& edges, Point2i origin, const RayFan& fan, int levels,
+                            Work& work, Trace* trace, int iteration, Visit&& visit) {
+  const int n = fan.count();
+  origins_.assign(1, origin);
+  for (int level = 1;; ++level) {
+    hits_.clear();
+    for (const Point2i& o : origins_) {
+      for (int k = 0; k < n; ++k) {
+        const RayHit h = fan.cast(edges, o, k, visit);
+        work.pixels += h.length + 1;
+        hits_.push_back(h);
+        if (trace) trace->rays.push_back({to_double(o), h.hit, iteration, level});
+      }
+    }
+    work.rays += hits_.size();
+    if (level == levels) break;
+    next_.clear();
+    for (const RayHit& h : hits_) next_.push_back(h.last_free);
+    origins_.swap(next_);
+  }
+  double sx = 0, sy = 0;
+  for (const RayHit& h : hits_) {
+    sx += h.hit.x;
+    sy += h.hit.y;
+  }
+  return {sx / hits_.size(), sy / hits_.size()};
+}
+
+}  // namespace projtrack

@@ -1,0 +1,42 @@
+// Edge maps the tests draw themselves, with ground truth counted independently of the estimators.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "geometry.hpp"
+#include "image_view.hpp"
+
+namespace projtrack::test {
+
+struct Scene {
+  std::string name;
+  cv::Mat inside;    // CV_8U, 255 on the object
+  cv::Mat edges;     // CV_8U, 255 on the contour: object pixels with a 4-neighbour outside
+  cv::Mat interior;  // CV_8U, 255 on the object's free pixels (inside and not contour)
+  double area = 0;   // interior pixel count
+  Point2d centroid;  // mean interior pixel
+
+  ImageView edge_view() const { return ImageView(edges.data, edges.cols, edges.rows, edges.step); }
+  bool is_interior(Point2i p) const { return interior.at<std::uint8_t>(p.y, p.x) != 0; }
+};
+
+// Builds edges, interior and ground truth from an object mask.
+Scene scene_from_mask(std::string name, const cv::Mat& inside);
+
+Scene disc_scene();    // radius 40 in 200×180
+Scene square_scene();  // 61×61, axis-aligned, in 200×180
+Scene ring_scene();    // radii 20 and 50 in 200×180: the hole is not part of the object
+Scene hand_scene();    // palm, four fingers and a thumb in 240×240; 8 px between fingers
+std::vector<Scene> all_scenes();
+
+// Removes one contour pixel so that a 4-connected path leads from the interior to the outside:
+// the first such pixel met walking right along row `y` from the interior point (x_start, y).
+// Returns the pixel opened.
+Point2i open_gap_right(Scene& s, int x_start, int y);
+
+// Interior pixels on a regular lattice of the given step (seeds to start estimates from).
+std::vector<Point2i> interior_points(const Scene& s, int step);
+
+}  // namespace projtrack::test
