@@ -24,7 +24,6 @@ class RasterizedRayCasting final : public Estimator {
  private:
   RecursiveCast cast_;
   std::vector<std::uint8_t> selected_;    // one byte per block of the frame
-  std::vector<std::uint32_t> selection_;  // indices of the selected blocks, in selection order
 };
 
 }  // namespace projtrack
