@@ -10,3 +10,4 @@
 #include "params.hpp"
 #include "status.hpp"
 #include "trace.hpp"
+#include "tracker.hpp"

@@ -23,7 +23,7 @@ class RasterizedRayCasting final : public Estimator {
 
  private:
   RecursiveCast cast_;
-  std::vector<std::uint8_t> selected_;    // one byte per block of the frame
+  std::vector<std::uint8_t> selected_;  // one byte per block of the frame
 };
 
 }  // namespace projtrack

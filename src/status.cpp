@@ -10,6 +10,8 @@ std::string_view status_name(Status s) {
       return "reached-border";
     case Status::CoversFrame:
       return "covers-frame";
+    case Status::NoInnerPoint:
+      return "no-inner-point";
     case Status::InnerPointOutside:
       return "inner-point-outside";
     case Status::InnerPointOnEdge:

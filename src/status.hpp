@@ -11,6 +11,7 @@ enum class Status {
   ReachedBorder,  // it touches the frame border: the object is cut by the frame, or it leaked
   CoversFrame,    // it touches all four borders: no closed contour around the inner point
   // Without features:
+  NoInnerPoint,       // nothing to track yet: no inner point was given
   InnerPointOutside,  // the inner point is farther outside the frame than the seed radius
   InnerPointOnEdge,   // the inner point and every pixel within the seed radius are edges
   EmptyImage,         // zero width or height, or no pixels

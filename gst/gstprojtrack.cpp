@@ -1,0 +1,548 @@
+/**
+ * SECTION:element-projtrack
+ * @title: projtrack
+ *
+ * Tracks one object in video from its edges and one point inside it (the *inner point*), with the
+ * estimators of Quesada & León, "Filling-Based Techniques Applied to Object Projection Feature
+ * Estimation": on every buffer it computes the edge image, runs the chosen estimator from the
+ * inner point and reports the object's centroid, area (px²) and bounding box, then moves the
+ * inner point for the next frame.
+ *
+ * While tracking, every buffer carries a #GstVideoRegionOfInterestMeta of type `object` (the
+ * bounding box) with a `projtrack` parameter structure holding the features, and the element
+ * posts an element message named `projtrack` (see docs/element.md for every field). Without an
+ * object the message's `status` says why (e.g. `no-inner-point`) and no meta is attached.
+ *
+ * The inner point comes from the `inner-point-x`/`inner-point-y` properties or from a click: a
+ * left mouse-button press arriving from downstream (a click in the window of `autovideosink`)
+ * starts tracking at the clicked pixel; a right click stops it. With `draw=true` the element
+ * draws what the estimator did: rays and hits, selected blocks, filled pixels or grid lines, the
+ * bounding box, the centroid and the inner point.
+ *
+ * Luma formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444) are read in place; packed RGB formats
+ * are converted to gray internally. The element works in place and never copies the frame.
+ *
+ * ## Example launch lines
+ * |[
+ * gst-launch-1.0 -m videotestsrc pattern=ball num-buffers=100 ! video/x-raw,width=320,height=240 !
+ * projtrack inner-point-x=160 inner-point-y=120 ! fakesink
+ * ]| Tracks videotestsrc's ball and prints a `projtrack` message per frame.
+ * |[
+ * gst-launch-1.0 v4l2src ! videoconvert ! projtrack draw=true ! videoconvert ! autovideosink
+ * ]| Click on an object in the window to track it; the overlay shows the grid fill.
+ * |[
+ * gst-launch-1.0 filesrc location=clip.mp4 ! decodebin ! videoconvert ! projtrack
+ * method=pixel-filling draw=true inner-point-x=320 inner-point-y=240 ! videoconvert ! autovideosink
+ * ]| Tracks from a given inner point in a file, with pixel-filling.
+ */
+
+#include "gstprojtrack.h"
+
+#include <gst/video/navigation.h>
+
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "edge_detection.hpp"
+#include "frame_gray.hpp"
+#include "overlay.hpp"
+#include "tracker.hpp"
+
+GST_DEBUG_CATEGORY_STATIC(gst_projtrack_debug);
+#define GST_CAT_DEFAULT gst_projtrack_debug
+
+using projtrack::EdgeDetector;
+using projtrack::Features;
+using projtrack::Method;
+using projtrack::Status;
+
+namespace {
+
+constexpr Method kDefaultMethod = Method::GridFilling;
+constexpr EdgeDetector kDefaultEdgeDetector = EdgeDetector::Canny;
+constexpr double kMaxGradientThreshold = 10000.0;
+
+// Everything a user can set; read by the streaming thread as one copy per frame.
+struct Settings {
+  Method method = kDefaultMethod;
+  projtrack::Params params;
+  projtrack::EdgeParams edges;
+  bool draw = false;
+  bool post_messages = true;
+  int seed_x = -1, seed_y = -1;  // the last inner point given (property or click); -1 = none
+};
+
+// What the streaming thread must do to the track before the next frame.
+enum class SeedCommand { None, Seed, Reset };
+
+// Per-stream state: created in set_info, dropped in stop; touched by the streaming thread only.
+struct Stream {
+  projtrack::EdgeMap edge_map;
+  projtrack::Tracker tracker;
+  projtrack::Trace trace;
+  std::vector<std::uint8_t> gray;  // packed RGB frames converted to gray
+  int width = 0, height = 0;
+  Status last_status = Status::NoInnerPoint;
+};
+
+}  // namespace
+
+struct _GstProjtrack {
+  GstVideoFilter parent;
+  Settings* settings;   // GST_OBJECT_LOCK
+  SeedCommand pending;  // GST_OBJECT_LOCK
+  Stream* stream;       // streaming thread
+};
+
+enum {
+  PROP_0,
+  PROP_METHOD,
+  PROP_RAYS,
+  PROP_RECURSION,
+  PROP_BLOCK_SIZE,
+  PROP_GRID_SIZE,
+  PROP_MAX_ITERATIONS,
+  PROP_CONVERGENCE,
+  PROP_EDGE_DETECTOR,
+  PROP_EDGE_THRESHOLD_LOW,
+  PROP_EDGE_THRESHOLD_HIGH,
+  PROP_BLUR,
+  PROP_INNER_POINT_X,
+  PROP_INNER_POINT_Y,
+  PROP_DRAW,
+  PROP_POST_MESSAGES,
+  N_PROPERTIES
+};
+
+static GParamSpec* properties[N_PROPERTIES];
+
+#define VIDEO_FORMATS                                                                             \
+  "{ I420, YV12, NV12, NV21, Y42B, Y444, GRAY8, BGRx, RGBx, xRGB, xBGR, BGRA, RGBA, ARGB, ABGR, " \
+  "BGR, RGB }"
+
+static GstStaticPadTemplate sink_template = GST_STATIC_PAD_TEMPLATE(
+    "sink", GST_PAD_SINK, GST_PAD_ALWAYS, GST_STATIC_CAPS(GST_VIDEO_CAPS_MAKE(VIDEO_FORMATS)));
+static GstStaticPadTemplate src_template = GST_STATIC_PAD_TEMPLATE(
+    "src", GST_PAD_SRC, GST_PAD_ALWAYS, GST_STATIC_CAPS(GST_VIDEO_CAPS_MAKE(VIDEO_FORMATS)));
+
+GType gst_projtrack_method_get_type(void) {
+  static GType type = 0;
+  static const GEnumValue values[] = {
+      {static_cast<gint>(Method::RayCasting), "n-ray-casting: mean of n ray hits", "ray-casting"},
+      {static_cast<gint>(Method::IterativeRayCasting),
+       "Iterative n-ray-casting: cast, move toward the centroid, repeat", "iterative-ray-casting"},
+      {static_cast<gint>(Method::RecursiveRayCasting),
+       "Iterative n^y-ray-casting: recast n rays from every hit, y levels deep",
+       "recursive-ray-casting"},
+      {static_cast<gint>(Method::RasterizedRayCasting),
+       "Iterative n^y-ray-casting with m-rasterization: blocks crossed by rays",
+       "rasterized-ray-casting"},
+      {static_cast<gint>(Method::PixelFilling),
+       "Pixel-filling: flood fill up to the edges (exact; leaks through gaps)", "pixel-filling"},
+      {static_cast<gint>(Method::GridFilling),
+       "m-grid-filling: fill along a grid of m×m cells (the paper's proposal)", "grid-filling"},
+      {0, nullptr, nullptr}};
+  if (g_once_init_enter(&type)) {
+    g_once_init_leave(&type, g_enum_register_static("GstProjtrackMethod", values));
+  }
+  return type;
+}
+
+GType gst_projtrack_edge_detector_get_type(void) {
+  static GType type = 0;
+  static const GEnumValue values[] = {
+      {static_cast<gint>(EdgeDetector::Canny), "Canny (hysteresis thresholds low/high)", "canny"},
+      {static_cast<gint>(EdgeDetector::Sobel), "Sobel |Gx|+|Gy| >= low (thick edges)", "sobel"},
+      {static_cast<gint>(EdgeDetector::Input),
+       "Input: the frame already is an edge map (non-zero luma = edge)", "input"},
+      {0, nullptr, nullptr}};
+  if (g_once_init_enter(&type)) {
+    g_once_init_leave(&type, g_enum_register_static("GstProjtrackEdgeDetector", values));
+  }
+  return type;
+}
+
+G_DEFINE_TYPE(GstProjtrack, gst_projtrack, GST_TYPE_VIDEO_FILTER)
+GST_ELEMENT_REGISTER_DEFINE(projtrack, "projtrack", GST_RANK_NONE, GST_TYPE_PROJTRACK)
+
+static void gst_projtrack_set_property(GObject* object, guint prop_id, const GValue* value,
+                                       GParamSpec* pspec) {
+  auto* self = GST_PROJTRACK(object);
+  GST_OBJECT_LOCK(self);
+  Settings& s = *self->settings;
+  switch (prop_id) {
+    case PROP_METHOD:
+      s.method = static_cast<Method>(g_value_get_enum(value));
+      break;
+    case PROP_RAYS:
+      s.params.rays = static_cast<int>(g_value_get_uint(value));
+      break;
+    case PROP_RECURSION:
+      s.params.recursion = static_cast<int>(g_value_get_uint(value));
+      break;
+    case PROP_BLOCK_SIZE:
+      s.params.block_size = static_cast<int>(g_value_get_uint(value));
+      break;
+    case PROP_GRID_SIZE:
+      s.params.grid_size = static_cast<int>(g_value_get_uint(value));
+      break;
+    case PROP_MAX_ITERATIONS:
+      s.params.max_iterations = static_cast<int>(g_value_get_uint(value));
+      break;
+    case PROP_CONVERGENCE:
+      s.params.convergence = g_value_get_double(value);
+      break;
+    case PROP_EDGE_DETECTOR:
+      s.edges.detector = static_cast<EdgeDetector>(g_value_get_enum(value));
+      break;
+    case PROP_EDGE_THRESHOLD_LOW:
+      s.edges.low = g_value_get_double(value);
+      break;
+    case PROP_EDGE_THRESHOLD_HIGH:
+      s.edges.high = g_value_get_double(value);
+      break;
+    case PROP_BLUR:
+      s.edges.blur = static_cast<int>(g_value_get_uint(value));
+      break;
+    case PROP_INNER_POINT_X:
+    case PROP_INNER_POINT_Y: {
+      const int v = g_value_get_int(value);
+      (prop_id == PROP_INNER_POINT_X ? s.seed_x : s.seed_y) = v;
+      if (v < 0)
+        self->pending = SeedCommand::Reset;
+      else if (s.seed_x >= 0 && s.seed_y >= 0)
+        self->pending = SeedCommand::Seed;
+      break;
+    }
+    case PROP_DRAW:
+      s.draw = g_value_get_boolean(value);
+      break;
+    case PROP_POST_MESSAGES:
+      s.post_messages = g_value_get_boolean(value);
+      break;
+    default:
+      G_OBJECT_WARN_INVALID_PROPERTY_ID(object, prop_id, pspec);
+      break;
+  }
+  GST_OBJECT_UNLOCK(self);
+}
+
+static void gst_projtrack_get_property(GObject* object, guint prop_id, GValue* value,
+                                       GParamSpec* pspec) {
+  auto* self = GST_PROJTRACK(object);
+  GST_OBJECT_LOCK(self);
+  const Settings& s = *self->settings;
+  switch (prop_id) {
+    case PROP_METHOD:
+      g_value_set_enum(value, static_cast<gint>(s.method));
+      break;
+    case PROP_RAYS:
+      g_value_set_uint(value, s.params.rays);
+      break;
+    case PROP_RECURSION:
+      g_value_set_uint(value, s.params.recursion);
+      break;
+    case PROP_BLOCK_SIZE:
+      g_value_set_uint(value, s.params.block_size);
+      break;
+    case PROP_GRID_SIZE:
+      g_value_set_uint(value, s.params.grid_size);
+      break;
+    case PROP_MAX_ITERATIONS:
+      g_value_set_uint(value, s.params.max_iterations);
+      break;
+    case PROP_CONVERGENCE:
+      g_value_set_double(value, s.params.convergence);
+      break;
+    case PROP_EDGE_DETECTOR:
+      g_value_set_enum(value, static_cast<gint>(s.edges.detector));
+      break;
+    case PROP_EDGE_THRESHOLD_LOW:
+      g_value_set_double(value, s.edges.low);
+      break;
+    case PROP_EDGE_THRESHOLD_HIGH:
+      g_value_set_double(value, s.edges.high);
+      break;
+    case PROP_BLUR:
+      g_value_set_uint(value, s.edges.blur);
+      break;
+    case PROP_INNER_POINT_X:
+      g_value_set_int(value, s.seed_x);
+      break;
+    case PROP_INNER_POINT_Y:
+      g_value_set_int(value, s.seed_y);
+      break;
+    case PROP_DRAW:
+      g_value_set_boolean(value, s.draw);
+      break;
+    case PROP_POST_MESSAGES:
+      g_value_set_boolean(value, s.post_messages);
+      break;
+    default:
+      G_OBJECT_WARN_INVALID_PROPERTY_ID(object, prop_id, pspec);
+      break;
+  }
+  GST_OBJECT_UNLOCK(self);
+}
+
+// A restart (caps change, stop/start) begins again from the last inner point given, if any.
+static void reseed_from_settings_locked(GstProjtrack* self) {
+  const Settings& s = *self->settings;
+  self->pending = s.seed_x >= 0 && s.seed_y >= 0 ? SeedCommand::Seed : SeedCommand::Reset;
+}
+
+static gboolean gst_projtrack_set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info,
+                                       GstCaps*, GstVideoInfo*) {
+  auto* self = GST_PROJTRACK(filter);
+  if (!self->stream) self->stream = new Stream;
+  Stream& st = *self->stream;
+  const int width = GST_VIDEO_INFO_WIDTH(in_info), height = GST_VIDEO_INFO_HEIGHT(in_info);
+  if (width != st.width || height != st.height) {
+    GST_DEBUG_OBJECT(self, "new frame size %dx%d: the track restarts", width, height);
+    st.tracker.reset();
+    st.width = width;
+    st.height = height;
+    GST_OBJECT_LOCK(self);
+    reseed_from_settings_locked(self);
+    GST_OBJECT_UNLOCK(self);
+  }
+  return TRUE;
+}
+
+static gboolean gst_projtrack_stop(GstBaseTransform* trans) {
+  auto* self = GST_PROJTRACK(trans);
+  delete self->stream;
+  self->stream = nullptr;
+  GST_OBJECT_LOCK(self);
+  reseed_from_settings_locked(self);
+  GST_OBJECT_UNLOCK(self);
+  return TRUE;
+}
+
+// Left click: track from the clicked pixel. Right click: stop tracking.
+static gboolean gst_projtrack_src_event(GstBaseTransform* trans, GstEvent* event) {
+  auto* self = GST_PROJTRACK(trans);
+  if (GST_EVENT_TYPE(event) == GST_EVENT_NAVIGATION &&
+      gst_navigation_event_get_type(event) == GST_NAVIGATION_EVENT_MOUSE_BUTTON_PRESS) {
+    gint button = 0;
+    gdouble x = 0, y = 0;
+    if (gst_navigation_event_parse_mouse_button_event(event, &button, &x, &y) &&
+        (button == 1 || button == 3) && std::isfinite(x) && std::isfinite(y)) {
+      GST_OBJECT_LOCK(self);
+      Settings& s = *self->settings;
+      if (button == 1 && x >= 0 && y >= 0 && x < G_MAXINT && y < G_MAXINT) {
+        s.seed_x = static_cast<int>(std::lround(x));
+        s.seed_y = static_cast<int>(std::lround(y));
+        self->pending = SeedCommand::Seed;
+      } else {
+        s.seed_x = s.seed_y = -1;
+        self->pending = SeedCommand::Reset;
+      }
+      const int sx = s.seed_x, sy = s.seed_y;
+      GST_OBJECT_UNLOCK(self);
+      GST_INFO_OBJECT(self, "click (button %d) at %.1f, %.1f: inner point %d, %d", button, x, y, sx,
+                      sy);
+      g_object_notify_by_pspec(G_OBJECT(self), properties[PROP_INNER_POINT_X]);
+      g_object_notify_by_pspec(G_OBJECT(self), properties[PROP_INNER_POINT_Y]);
+    }
+  }
+  return GST_BASE_TRANSFORM_CLASS(gst_projtrack_parent_class)->src_event(trans, event);
+}
+
+static GstStructure* features_structure(const char* name, const Features& f, Method method) {
+  return gst_structure_new(name, "status", G_TYPE_STRING,
+                           std::string(projtrack::status_name(f.status)).c_str(), "centroid-x",
+                           G_TYPE_DOUBLE, f.centroid.x, "centroid-y", G_TYPE_DOUBLE, f.centroid.y,
+                           "area", G_TYPE_DOUBLE, f.area, "inner-point-x", G_TYPE_INT,
+                           f.inner_point.x, "inner-point-y", G_TYPE_INT, f.inner_point.y, "method",
+                           G_TYPE_STRING, std::string(projtrack::method_name(method)).c_str(),
+                           "iterations", G_TYPE_INT, f.iterations, nullptr);
+}
+
+static void attach_meta(GstBuffer* buffer, const Features& f, Method method) {
+  GstVideoRegionOfInterestMeta* meta = gst_buffer_add_video_region_of_interest_meta(
+      buffer, "object", f.bbox.x, f.bbox.y, f.bbox.width, f.bbox.height);
+  gst_video_region_of_interest_meta_add_param(meta, features_structure("projtrack", f, method));
+}
+
+static GstMessage* features_message(GstProjtrack* self, GstBuffer* buffer, const Features& f,
+                                    Method method, const std::optional<projtrack::Point2i>& inner,
+                                    guint64 processing_ns) {
+  const GstSegment* segment = &GST_BASE_TRANSFORM(self)->segment;
+  const GstClockTime pts = GST_BUFFER_PTS(buffer);
+  const GstClockTime stream_time = gst_segment_to_stream_time(segment, GST_FORMAT_TIME, pts);
+  const GstClockTime running_time = gst_segment_to_running_time(segment, GST_FORMAT_TIME, pts);
+  GstStructure* s;
+  if (f.valid()) {
+    s = features_structure("projtrack", f, method);
+    gst_structure_set(s, "x", G_TYPE_INT, f.bbox.x, "y", G_TYPE_INT, f.bbox.y, "width", G_TYPE_INT,
+                      f.bbox.width, "height", G_TYPE_INT, f.bbox.height, "rays-cast", G_TYPE_UINT64,
+                      static_cast<guint64>(f.rays_cast), "pixels-visited", G_TYPE_UINT64,
+                      static_cast<guint64>(f.pixels_visited), nullptr);
+  } else {
+    s = gst_structure_new("projtrack", "status", G_TYPE_STRING,
+                          std::string(projtrack::status_name(f.status)).c_str(), "detail",
+                          G_TYPE_STRING, f.detail.c_str(), "method", G_TYPE_STRING,
+                          std::string(projtrack::method_name(method)).c_str(), nullptr);
+    if (inner) {
+      gst_structure_set(s, "inner-point-x", G_TYPE_INT, inner->x, "inner-point-y", G_TYPE_INT,
+                        inner->y, nullptr);
+    }
+  }
+  gst_structure_set(s, "timestamp", G_TYPE_UINT64, pts, "stream-time", G_TYPE_UINT64, stream_time,
+                    "running-time", G_TYPE_UINT64, running_time, "duration", G_TYPE_UINT64,
+                    GST_BUFFER_DURATION(buffer), "processing-time", G_TYPE_UINT64, processing_ns,
+                    nullptr);
+  return gst_message_new_element(GST_OBJECT(self), s);
+}
+
+static GstFlowReturn gst_projtrack_transform_frame_ip(GstVideoFilter* filter,
+                                                      GstVideoFrame* frame) {
+  auto* self = GST_PROJTRACK(filter);
+  const auto start = std::chrono::steady_clock::now();
+
+  GST_OBJECT_LOCK(self);
+  const Settings s = *self->settings;
+  const SeedCommand command = std::exchange(self->pending, SeedCommand::None);
+  GST_OBJECT_UNLOCK(self);
+
+  Stream& st = *self->stream;
+  if (command == SeedCommand::Seed)
+    st.tracker.seed({s.seed_x, s.seed_y});
+  else if (command == SeedCommand::Reset)
+    st.tracker.reset();
+
+  const projtrack::ImageView gray = projtrack::gst::frame_gray(frame, st.gray);
+  const projtrack::ImageView edges = st.edge_map.detect(gray, s.edges);
+  projtrack::Trace* trace = s.draw ? &st.trace : nullptr;
+  const Features f = st.tracker.track(edges, s.method, s.params, trace);
+  if (f.valid()) attach_meta(frame->buffer, f, s.method);
+  if (s.draw) projtrack::gst::draw_overlay(frame, s.method, f, st.trace);
+
+  if (f.status != st.last_status) {
+    if (f.status == Status::InvalidParameters)
+      GST_WARNING_OBJECT(self, "invalid parameters: %s", f.detail.c_str());
+    else
+      GST_INFO_OBJECT(self, "status %s -> %s%s%s",
+                      std::string(projtrack::status_name(st.last_status)).c_str(),
+                      std::string(projtrack::status_name(f.status)).c_str(),
+                      f.detail.empty() ? "" : ": ", f.detail.c_str());
+    st.last_status = f.status;
+  }
+
+  if (s.post_messages) {
+    const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                        std::chrono::steady_clock::now() - start)
+                        .count();
+    GstMessage* msg = features_message(self, frame->buffer, f, s.method, st.tracker.inner_point(),
+                                       static_cast<guint64>(ns));
+    gst_element_post_message(GST_ELEMENT(self), msg);  // never under the object lock
+  }
+  return GST_FLOW_OK;
+}
+
+static void gst_projtrack_finalize(GObject* object) {
+  auto* self = GST_PROJTRACK(object);
+  delete self->stream;
+  delete self->settings;
+  G_OBJECT_CLASS(gst_projtrack_parent_class)->finalize(object);
+}
+
+static void gst_projtrack_init(GstProjtrack* self) {
+  self->settings = new Settings;
+  self->pending = SeedCommand::None;
+  self->stream = nullptr;
+  // Metadata needs a writable buffer: never pass buffers through untouched.
+  gst_base_transform_set_passthrough(GST_BASE_TRANSFORM(self), FALSE);
+}
+
+static void gst_projtrack_class_init(GstProjtrackClass* klass) {
+  auto* gobject_class = G_OBJECT_CLASS(klass);
+  auto* element_class = GST_ELEMENT_CLASS(klass);
+  auto* trans_class = GST_BASE_TRANSFORM_CLASS(klass);
+  auto* filter_class = GST_VIDEO_FILTER_CLASS(klass);
+
+  GST_DEBUG_CATEGORY_INIT(gst_projtrack_debug, "projtrack", 0,
+                          "object projection feature tracking");
+
+  gobject_class->set_property = gst_projtrack_set_property;
+  gobject_class->get_property = gst_projtrack_get_property;
+  gobject_class->finalize = gst_projtrack_finalize;
+
+  const auto flags = static_cast<GParamFlags>(G_PARAM_READWRITE | G_PARAM_STATIC_STRINGS |
+                                              GST_PARAM_MUTABLE_PLAYING);
+  const projtrack::Params p;
+  const projtrack::EdgeParams e;
+  properties[PROP_METHOD] =
+      g_param_spec_enum("method", "Method", "Feature estimation method", GST_TYPE_PROJTRACK_METHOD,
+                        static_cast<gint>(kDefaultMethod), flags);
+  properties[PROP_RAYS] =
+      g_param_spec_uint("rays", "Rays", "n: rays per cast (ray methods and the inner-point update)",
+                        projtrack::kMinRays, projtrack::kMaxRays, p.rays, flags);
+  properties[PROP_RECURSION] = g_param_spec_uint(
+      "recursion", "Recursion",
+      "y: levels of re-casting for recursive/rasterized ray-casting (rays^recursion <= 1048576)",
+      projtrack::kMinRecursion, projtrack::kMaxRecursion, p.recursion, flags);
+  properties[PROP_BLOCK_SIZE] =
+      g_param_spec_uint("block-size", "Block size", "m of m-rasterization, in pixels", 1,
+                        projtrack::kMaxCellSize, p.block_size, flags);
+  properties[PROP_GRID_SIZE] =
+      g_param_spec_uint("grid-size", "Grid size", "m of m-grid-filling: grid cell size in pixels",
+                        1, projtrack::kMaxCellSize, p.grid_size, flags);
+  properties[PROP_MAX_ITERATIONS] = g_param_spec_uint(
+      "max-iterations", "Max iterations", "Iteration cap of the iterative ray methods", 1,
+      projtrack::kMaxIterations, p.max_iterations, flags);
+  properties[PROP_CONVERGENCE] = g_param_spec_double(
+      "convergence", "Convergence",
+      "Iterations stop when the inner point and centroid move less than this, in pixels", 0.0,
+      projtrack::kMaxConvergence, p.convergence, flags);
+  properties[PROP_EDGE_DETECTOR] = g_param_spec_enum(
+      "edge-detector", "Edge detector", "How the edge image is computed",
+      GST_TYPE_PROJTRACK_EDGE_DETECTOR, static_cast<gint>(kDefaultEdgeDetector), flags);
+  properties[PROP_EDGE_THRESHOLD_LOW] = g_param_spec_double(
+      "edge-threshold-low", "Edge threshold low",
+      "Canny's low hysteresis threshold, and Sobel's threshold (|Gx|+|Gy|; a step of contrast C "
+      "scores 4*C)",
+      0.0, kMaxGradientThreshold, e.low, flags);
+  properties[PROP_EDGE_THRESHOLD_HIGH] = g_param_spec_double(
+      "edge-threshold-high", "Edge threshold high", "Canny's high hysteresis threshold", 0.0,
+      kMaxGradientThreshold, e.high, flags);
+  properties[PROP_BLUR] =
+      g_param_spec_uint("blur", "Blur", "3x3 box-blur passes before edge detection (0 = none)", 0,
+                        projtrack::kMaxBlurPasses, e.blur, flags);
+  properties[PROP_INNER_POINT_X] = g_param_spec_int(
+      "inner-point-x", "Inner point x",
+      "Column of a pixel inside the object to track; setting it (with inner-point-y) re-seeds "
+      "the track, -1 stops it. Updated by clicks",
+      -1, G_MAXINT, -1, flags);
+  properties[PROP_INNER_POINT_Y] = g_param_spec_int(
+      "inner-point-y", "Inner point y",
+      "Row of a pixel inside the object to track; setting it (with inner-point-x) re-seeds the "
+      "track, -1 stops it. Updated by clicks",
+      -1, G_MAXINT, -1, flags);
+  properties[PROP_DRAW] = g_param_spec_boolean(
+      "draw", "Draw", "Draw what the estimator did on the video", FALSE, flags);
+  properties[PROP_POST_MESSAGES] =
+      g_param_spec_boolean("post-messages", "Post messages",
+                           "Post a projtrack element message for every frame", TRUE, flags);
+  g_object_class_install_properties(gobject_class, N_PROPERTIES, properties);
+
+  gst_element_class_set_static_metadata(
+      element_class, "Object projection feature tracker", "Filter/Analyzer/Video",
+      "Tracks an object from its edges and one inner point: centroid, area and bounding box on "
+      "every frame (ray-casting, pixel-filling and grid-filling estimators)",
+      "projtrack developers");
+  gst_element_class_add_static_pad_template(element_class, &sink_template);
+  gst_element_class_add_static_pad_template(element_class, &src_template);
+
+  trans_class->stop = GST_DEBUG_FUNCPTR(gst_projtrack_stop);
+  trans_class->src_event = GST_DEBUG_FUNCPTR(gst_projtrack_src_event);
+  filter_class->set_info = GST_DEBUG_FUNCPTR(gst_projtrack_set_info);
+  filter_class->transform_frame_ip = GST_DEBUG_FUNCPTR(gst_projtrack_transform_frame_ip);
+
+  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_METHOD, static_cast<GstPluginAPIFlags>(0));
+  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_EDGE_DETECTOR, static_cast<GstPluginAPIFlags>(0));
+}

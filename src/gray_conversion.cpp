@@ -1,0 +1,31 @@
+#include "gray_conversion.hpp"
+
+namespace projtrack {
+
+namespace {
+// The pixel stride as a constant lets the compiler unroll and vectorise each variant.
+template <int kPixelStride>
+void convert(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b,
+             std::ptrdiff_t row_stride, int width, int height, std::uint8_t* gray,
+             std::ptrdiff_t gray_stride) {
+  for (int y = 0; y < height; ++y) {
+    const std::ptrdiff_t row = y * row_stride;
+    std::uint8_t* out = gray + y * gray_stride;
+    for (int x = 0; x < width; ++x) {
+      const std::ptrdiff_t i = row + static_cast<std::ptrdiff_t>(x) * kPixelStride;
+      out[x] = static_cast<std::uint8_t>((77 * r[i] + 150 * g[i] + 29 * b[i] + 128) >> 8);
+    }
+  }
+}
+}  // namespace
+
+void packed_rgb_to_gray(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b,
+                        int pixel_stride, std::ptrdiff_t row_stride, int width, int height,
+                        std::uint8_t* gray, std::ptrdiff_t gray_stride) {
+  if (pixel_stride == 4)
+    convert<4>(r, g, b, row_stride, width, height, gray, gray_stride);
+  else
+    convert<3>(r, g, b, row_stride, width, height, gray, gray_stride);
+}
+
+}  // namespace projtrack
