@@ -1,0 +1,379 @@
+// The projtrack element in GstHarness: formats, metadata, messages, properties, caps, clicks,
+// overlay.
+#include <gst/check/gstharness.h>
+#include <gst/gst.h>
+#include <gst/video/navigation.h>
+#include <gst/video/video.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "scenes.hpp"
+
+namespace {
+
+struct GstEnvironment : ::testing::Environment {
+  void SetUp() override { gst_init(nullptr, nullptr); }
+};
+const auto* const kGstEnvironment = ::testing::AddGlobalTestEnvironment(new GstEnvironment);
+
+constexpr const char* kFormats[] = {"GRAY8", "I420", "YV12", "NV12", "NV21", "Y42B",
+                                    "Y444",  "BGRx", "RGBx", "xRGB", "xBGR", "BGRA",
+                                    "RGBA",  "ARGB", "ABGR", "BGR",  "RGB"};
+
+// A bright disc on a darker background, as a GRAY8 frame with rows padded to 4 bytes.
+struct DiscFrame {
+  int width, height, cx, cy, radius;
+  double area() const { return M_PI * radius * radius; }
+  GstBuffer* gray8() const {
+    const int stride = (width + 3) & ~3;
+    GstBuffer* buf = gst_buffer_new_allocate(nullptr, static_cast<gsize>(stride) * height, nullptr);
+    GstMapInfo map;
+    gst_buffer_map(buf, &map, GST_MAP_WRITE);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < stride; ++x) {
+        const int dx = x - cx, dy = y - cy;
+        map.data[y * stride + x] = dx * dx + dy * dy <= radius * radius ? 220 : 40;
+      }
+    gst_buffer_unmap(buf, &map);
+    return buf;
+  }
+  std::string caps(const char* format) const {
+    return "video/x-raw,format=" + std::string(format) + ",width=" + std::to_string(width) +
+           ",height=" + std::to_string(height) + ",framerate=30/1";
+  }
+};
+
+// Converts a GRAY8 frame into `format` with videoconvert (GStreamer's default strides).
+GstBuffer* convert(const DiscFrame& scene, const char* format) {
+  GstHarness* h = gst_harness_new("videoconvert");
+  gst_harness_set_src_caps_str(h, scene.caps("GRAY8").c_str());
+  gst_harness_set_sink_caps_str(h, scene.caps(format).c_str());
+  GstBuffer* out = gst_harness_push_and_pull(h, scene.gray8());
+  gst_harness_teardown(h);
+  return out;
+}
+
+class Element : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    h_ = gst_harness_new("projtrack");
+    ASSERT_NE(h_, nullptr) << "is GST_PLUGIN_PATH set to the build's gst folder?";
+    bus_ = gst_bus_new();
+    gst_element_set_bus(h_->element, bus_);
+  }
+  void TearDown() override {
+    gst_harness_teardown(h_);
+    gst_object_unref(bus_);
+  }
+  void set_caps(const DiscFrame& scene, const char* format) {
+    gst_harness_set_src_caps_str(h_, scene.caps(format).c_str());
+  }
+  // Pushes `buf` (timestamped as frame `n`), returns the output buffer (owned by the caller).
+  GstBuffer* push(GstBuffer* buf, int n = 0) {
+    GST_BUFFER_PTS(buf) = n * GST_SECOND / 30;
+    GST_BUFFER_DURATION(buf) = GST_SECOND / 30;
+    EXPECT_EQ(gst_harness_push(h_, buf), GST_FLOW_OK);
+    return gst_harness_pull(h_);
+  }
+  // The next projtrack message, or null.
+  GstMessage* message() { return gst_bus_pop_filtered(bus_, GST_MESSAGE_ELEMENT); }
+  void seed(int x, int y) {
+    g_object_set(h_->element, "inner-point-x", x, "inner-point-y", y, nullptr);
+  }
+
+  GstHarness* h_ = nullptr;
+  GstBus* bus_ = nullptr;
+};
+
+std::string status_of(GstMessage* m) {
+  const char* s = gst_structure_get_string(gst_message_get_structure(m), "status");
+  return s ? s : "";
+}
+
+double get_double(const GstStructure* s, const char* field) {
+  double v = NAN;
+  EXPECT_TRUE(gst_structure_get_double(s, field, &v)) << field;
+  return v;
+}
+
+int get_int(const GstStructure* s, const char* field) {
+  int v = -12345;
+  EXPECT_TRUE(gst_structure_get_int(s, field, &v)) << field;
+  return v;
+}
+
+TEST_F(Element, EveryFormatAndOddSizesWithPaddedRows) {
+  for (const DiscFrame scene : {DiscFrame{161, 121, 80, 60, 30}, DiscFrame{97, 75, 47, 38, 20}}) {
+    for (const char* format : kFormats) {
+      SCOPED_TRACE(std::string(format) + " " + std::to_string(scene.width));
+      set_caps(scene, format);
+      seed(scene.cx, scene.cy);
+      GstBuffer* out = push(convert(scene, format));
+      ASSERT_NE(out, nullptr);
+      GstVideoRegionOfInterestMeta* roi = gst_buffer_get_video_region_of_interest_meta(out);
+      ASSERT_NE(roi, nullptr);
+      EXPECT_NEAR(roi->x + roi->w / 2.0, scene.cx + 0.5, 2.0);
+      GstMessage* m = message();
+      ASSERT_NE(m, nullptr);
+      const GstStructure* s = gst_message_get_structure(m);
+      EXPECT_EQ(status_of(m), "ok");
+      EXPECT_NEAR(get_double(s, "centroid-x"), scene.cx, 1.0);
+      EXPECT_NEAR(get_double(s, "centroid-y"), scene.cy, 1.0);
+      EXPECT_NEAR(get_double(s, "area") / scene.area(), 1.0, 0.15);
+      gst_message_unref(m);
+      gst_buffer_unref(out);
+    }
+  }
+}
+
+TEST_F(Element, TinyFramesGetAStatusNotACrash) {
+  for (auto [w, hgt] : {std::pair{1, 1}, std::pair{2, 2}, std::pair{3, 5}, std::pair{7, 3}}) {
+    const DiscFrame scene{w, hgt, 0, 0, 0};
+    for (const char* format : kFormats) {
+      SCOPED_TRACE(std::string(format) + " " + std::to_string(w) + "x" + std::to_string(hgt));
+      set_caps(scene, format);
+      seed(0, 0);
+      GstBuffer* out = push(convert(scene, format));
+      ASSERT_NE(out, nullptr);
+      GstMessage* m = message();
+      ASSERT_NE(m, nullptr);
+      EXPECT_FALSE(status_of(m).empty());
+      gst_message_unref(m);
+      gst_buffer_unref(out);
+    }
+  }
+}
+
+TEST_F(Element, MessageAndMetaDescribeTheDrawnScene) {
+  const DiscFrame scene{320, 240, 150, 110, 40};
+  set_caps(scene, "GRAY8");
+  seed(140, 100);
+  GstBuffer* out = push(scene.gray8(), 7);
+  GstMessage* m = message();
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(GST_MESSAGE_SRC(m), GST_OBJECT(h_->element));
+  const GstStructure* s = gst_message_get_structure(m);
+  EXPECT_STREQ(gst_structure_get_name(s), "projtrack");
+  EXPECT_EQ(status_of(m), "ok");
+  EXPECT_STREQ(gst_structure_get_string(s, "method"), "grid-filling");
+  const double cx = get_double(s, "centroid-x"), cy = get_double(s, "centroid-y");
+  EXPECT_NEAR(cx, 150, 0.5);
+  EXPECT_NEAR(cy, 110, 0.5);
+  EXPECT_NEAR(get_double(s, "area") / scene.area(), 1.0, 0.08);
+  // The bounding box hugs the disc's interior (Canny's contour is on its boundary).
+  EXPECT_NEAR(get_int(s, "x"), 110, 2);
+  EXPECT_NEAR(get_int(s, "y"), 70, 2);
+  EXPECT_NEAR(get_int(s, "width"), 81, 4);
+  EXPECT_NEAR(get_int(s, "height"), 81, 4);
+  EXPECT_NEAR(get_int(s, "inner-point-x"), 150, 3);
+  EXPECT_NEAR(get_int(s, "inner-point-y"), 110, 3);
+  EXPECT_EQ(get_int(s, "iterations"), 1);
+  guint64 ts = 0, stream_time = 0, running_time = 0, duration = 0, processing = 0;
+  ASSERT_TRUE(gst_structure_get_uint64(s, "timestamp", &ts));
+  ASSERT_TRUE(gst_structure_get_uint64(s, "stream-time", &stream_time));
+  ASSERT_TRUE(gst_structure_get_uint64(s, "running-time", &running_time));
+  ASSERT_TRUE(gst_structure_get_uint64(s, "duration", &duration));
+  ASSERT_TRUE(gst_structure_get_uint64(s, "processing-time", &processing));
+  EXPECT_EQ(ts, 7 * GST_SECOND / 30);
+  EXPECT_EQ(stream_time, ts);  // the harness's segment starts at 0
+  EXPECT_EQ(running_time, ts);
+  EXPECT_EQ(duration, GST_SECOND / 30);
+  EXPECT_GT(processing, 0u);
+
+  GstVideoRegionOfInterestMeta* roi = gst_buffer_get_video_region_of_interest_meta(out);
+  ASSERT_NE(roi, nullptr);
+  EXPECT_EQ(roi->roi_type, g_quark_from_string("object"));
+  EXPECT_EQ(static_cast<int>(roi->x), get_int(s, "x"));
+  EXPECT_EQ(static_cast<int>(roi->w), get_int(s, "width"));
+  const GstStructure* p = gst_video_region_of_interest_meta_get_param(roi, "projtrack");
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(get_double(p, "centroid-x"), cx);
+  EXPECT_EQ(get_double(p, "centroid-y"), cy);
+  EXPECT_EQ(get_double(p, "area"), get_double(s, "area"));
+  EXPECT_STREQ(gst_structure_get_string(p, "status"), "ok");
+  gst_message_unref(m);
+  gst_buffer_unref(out);
+}
+
+TEST_F(Element, WithoutAnInnerPointNoMetaAndTheMessageSaysWhy) {
+  const DiscFrame scene{160, 120, 80, 60, 30};
+  set_caps(scene, "I420");
+  GstBuffer* out = push(convert(scene, "I420"));
+  EXPECT_EQ(gst_buffer_get_video_region_of_interest_meta(out), nullptr);
+  GstMessage* m = message();
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(status_of(m), "no-inner-point");
+  const GstStructure* s = gst_message_get_structure(m);
+  EXPECT_FALSE(gst_structure_has_field(s, "centroid-x"));
+  EXPECT_FALSE(gst_structure_has_field(s, "area"));
+  EXPECT_TRUE(gst_structure_has_field(s, "timestamp"));
+  EXPECT_TRUE(gst_structure_has_field(s, "processing-time"));
+  gst_message_unref(m);
+  gst_buffer_unref(out);
+}
+
+TEST_F(Element, EveryMethodIsSelectable) {
+  const DiscFrame scene{200, 160, 100, 80, 35};
+  set_caps(scene, "GRAY8");
+  for (const char* method : {"ray-casting", "iterative-ray-casting", "recursive-ray-casting",
+                             "rasterized-ray-casting", "pixel-filling", "grid-filling"}) {
+    gst_util_set_object_arg(G_OBJECT(h_->element), "method", method);
+    seed(100, 80);  // the centre: plain ray-casting is biased from anywhere else
+    gst_buffer_unref(push(scene.gray8()));
+    GstMessage* m = message();
+    ASSERT_NE(m, nullptr);
+    const GstStructure* s = gst_message_get_structure(m);
+    EXPECT_STREQ(gst_structure_get_string(s, "method"), method);
+    EXPECT_EQ(status_of(m), "ok") << method;
+    EXPECT_NEAR(get_double(s, "centroid-x"), 100, 2.5) << method;
+    EXPECT_NEAR(get_double(s, "centroid-y"), 80, 2.5) << method;
+    gst_message_unref(m);
+  }
+}
+
+TEST_F(Element, PropertiesChangeWhilePlaying) {
+  const DiscFrame scene{200, 160, 100, 80, 35};
+  set_caps(scene, "GRAY8");
+  seed(100, 80);
+  gst_buffer_unref(push(scene.gray8(), 0));
+  GstMessage* m = message();
+  ASSERT_NE(m, nullptr);
+  gst_message_unref(m);
+
+  // Messages off: none; back on: one per frame again.
+  g_object_set(h_->element, "post-messages", FALSE, nullptr);
+  gst_buffer_unref(push(scene.gray8(), 1));
+  EXPECT_EQ(message(), nullptr);
+  g_object_set(h_->element, "post-messages", TRUE, "method", 4 /* pixel-filling */, nullptr);
+  gst_buffer_unref(push(scene.gray8(), 2));
+  m = message();
+  ASSERT_NE(m, nullptr);
+  EXPECT_STREQ(gst_structure_get_string(gst_message_get_structure(m), "method"), "pixel-filling");
+  gst_message_unref(m);
+
+  // An out-of-range combination the property ranges cannot catch: a status, not a crash.
+  g_object_set(h_->element, "method", 2, "rays", 1024u, "recursion", 3u, nullptr);
+  gst_buffer_unref(push(scene.gray8(), 3));
+  m = message();
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(status_of(m), "invalid-parameters");
+  EXPECT_NE(std::string(gst_structure_get_string(gst_message_get_structure(m), "detail"))
+                .find("rays^recursion"),
+            std::string::npos);
+  gst_message_unref(m);
+
+  // Edge detector "input": the frame is the edge map; pixel-filling is then exact.
+  const projtrack::test::Scene ring = projtrack::test::ring_scene();
+  const DiscFrame ring_caps{ring.edges.cols, ring.edges.rows, 0, 0, 0};
+  set_caps(ring_caps, "GRAY8");
+  GstBuffer* edges = gst_buffer_new_memdup(ring.edges.data, ring.edges.total());
+  gst_util_set_object_arg(G_OBJECT(h_->element), "edge-detector", "input");
+  g_object_set(h_->element, "method", 4, "rays", 32u, "recursion", 2u, nullptr);
+  seed(100, 55);
+  gst_buffer_unref(push(edges, 4));
+  m = message();
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(get_double(gst_message_get_structure(m), "area"), ring.area);
+  gst_message_unref(m);
+}
+
+TEST_F(Element, CapsChangeMidStreamRestartsCleanly) {
+  const DiscFrame big{320, 240, 150, 110, 40}, small{100, 80, 50, 40, 20};
+  set_caps(big, "NV12");
+  seed(150, 110);
+  for (int i = 0; i < 3; ++i) gst_buffer_unref(push(convert(big, "NV12"), i));
+  while (GstMessage* m = message()) {
+    EXPECT_EQ(status_of(m), "ok");
+    gst_message_unref(m);
+  }
+  // The new, smaller frames: the old inner point lies outside them.
+  set_caps(small, "NV12");
+  GstBuffer* out = push(convert(small, "NV12"), 3);
+  EXPECT_EQ(gst_buffer_get_video_region_of_interest_meta(out), nullptr);
+  gst_buffer_unref(out);
+  GstMessage* m = message();
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(status_of(m), "inner-point-outside");
+  gst_message_unref(m);
+  seed(50, 40);
+  gst_buffer_unref(push(convert(small, "NV12"), 4));
+  m = message();
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(status_of(m), "ok");
+  EXPECT_NEAR(get_double(gst_message_get_structure(m), "centroid-x"), 50, 1.0);
+  gst_message_unref(m);
+}
+
+TEST_F(Element, ClickSetsTheInnerPointAndRightClickStops) {
+  const DiscFrame scene{240, 180, 70, 90, 30};
+  set_caps(scene, "BGRx");
+  int notified = 0;
+  g_signal_connect(h_->element, "notify::inner-point-x",
+                   G_CALLBACK(+[](GObject*, GParamSpec*, gpointer n) { ++*static_cast<int*>(n); }),
+                   &notified);
+  gst_buffer_unref(push(convert(scene, "BGRx"), 0));
+  GstMessage* m = message();
+  EXPECT_EQ(status_of(m), "no-inner-point");
+  gst_message_unref(m);
+
+  ASSERT_TRUE(gst_harness_push_upstream_event(
+      h_,
+      gst_navigation_event_new_mouse_button_press(1, 75.4, 84.6, GST_NAVIGATION_MODIFIER_NONE)));
+  EXPECT_EQ(notified, 1);
+  gint x = 0, y = 0;
+  g_object_get(h_->element, "inner-point-x", &x, "inner-point-y", &y, nullptr);
+  EXPECT_EQ(x, 75);
+  EXPECT_EQ(y, 85);
+  gst_buffer_unref(push(convert(scene, "BGRx"), 1));
+  m = message();
+  EXPECT_EQ(status_of(m), "ok");
+  EXPECT_NEAR(get_double(gst_message_get_structure(m), "centroid-x"), 70, 1.0);
+  EXPECT_NEAR(get_double(gst_message_get_structure(m), "centroid-y"), 90, 1.0);
+  gst_message_unref(m);
+
+  ASSERT_TRUE(gst_harness_push_upstream_event(
+      h_, gst_navigation_event_new_mouse_button_press(3, 10, 10, GST_NAVIGATION_MODIFIER_NONE)));
+  gst_buffer_unref(push(convert(scene, "BGRx"), 2));
+  m = message();
+  EXPECT_EQ(status_of(m), "no-inner-point");
+  gst_message_unref(m);
+  g_object_get(h_->element, "inner-point-x", &x, nullptr);
+  EXPECT_EQ(x, -1);
+}
+
+bool same_bytes(GstBuffer* a, GstBuffer* b) {
+  GstMapInfo ma, mb;
+  gst_buffer_map(a, &ma, GST_MAP_READ);
+  gst_buffer_map(b, &mb, GST_MAP_READ);
+  const bool same = ma.size == mb.size && memcmp(ma.data, mb.data, ma.size) == 0;
+  gst_buffer_unmap(a, &ma);
+  gst_buffer_unmap(b, &mb);
+  return same;
+}
+
+TEST_F(Element, OverlayChangesPixelsOnlyWhenDrawIsOn) {
+  const DiscFrame scene{161, 121, 80, 60, 30};
+  for (const char* format : kFormats) {
+    SCOPED_TRACE(format);
+    set_caps(scene, format);
+    for (const char* method :
+         {"grid-filling", "pixel-filling", "rasterized-ray-casting", "ray-casting"}) {
+      gst_util_set_object_arg(G_OBJECT(h_->element), "method", method);
+      for (gboolean draw : {0, 1}) {
+        seed(scene.cx, scene.cy);
+        g_object_set(h_->element, "draw", draw, nullptr);
+        GstBuffer* in = convert(scene, format);
+        GstBuffer* reference = gst_buffer_copy_deep(in);
+        GstBuffer* out = push(in);
+        EXPECT_EQ(same_bytes(out, reference), !draw) << method;
+        gst_buffer_unref(out);
+        gst_buffer_unref(reference);
+      }
+    }
+  }
+}
+
+}  // namespace
