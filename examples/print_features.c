@@ -7,40 +7,40 @@
 #include <gst/gst.h>
 #include <stdio.h>
 
-#define DEFAULT_PIPELINE                                                          \
+#define DEFAULT_PIPELINE                                                           \
   "videotestsrc pattern=ball num-buffers=60 ! video/x-raw,width=320,height=240 ! " \
   "projtrack inner-point-x=160 inner-point-y=120 ! fakesink"
 
-static void print_features(const GstStructure *s) {
+static void print_features(const GstStructure* s) {
   GstClockTime ts = GST_CLOCK_TIME_NONE;
   gdouble cx, cy, area;
   gst_structure_get_uint64(s, "timestamp", &ts);
-  const gchar *status = gst_structure_get_string(s, "status");
+  const gchar* status = gst_structure_get_string(s, "status");
   if (gst_structure_get_double(s, "centroid-x", &cx) &&
       gst_structure_get_double(s, "centroid-y", &cy) &&
       gst_structure_get_double(s, "area", &area)) {
     printf("%" GST_TIME_FORMAT " %-15s centroid (%7.1f, %7.1f)  area %9.0f px²\n",
-            GST_TIME_ARGS(ts), status, cx, cy, area);
+           GST_TIME_ARGS(ts), status, cx, cy, area);
   } else { /* nothing tracked: the status says why */
     printf("%" GST_TIME_FORMAT " %-15s %s\n", GST_TIME_ARGS(ts), status,
-            gst_structure_get_string(s, "detail"));
+           gst_structure_get_string(s, "detail"));
   }
 }
 
-int main(int argc, char **argv) {
-  GError *error = NULL;
+int main(int argc, char** argv) {
+  GError* error = NULL;
   gst_init(&argc, &argv);
-  GstElement *pipeline = gst_parse_launch(argc > 1 ? argv[1] : DEFAULT_PIPELINE, &error);
+  GstElement* pipeline = gst_parse_launch(argc > 1 ? argv[1] : DEFAULT_PIPELINE, &error);
   if (!pipeline) {
     g_printerr("cannot build the pipeline: %s\n", error->message);
     g_clear_error(&error);
     return 1;
   }
-  GstBus *bus = gst_element_get_bus(pipeline);
+  GstBus* bus = gst_element_get_bus(pipeline);
   gst_element_set_state(pipeline, GST_STATE_PLAYING);
   int code = 0;
   for (gboolean done = FALSE; !done;) {
-    GstMessage *msg = gst_bus_timed_pop_filtered(
+    GstMessage* msg = gst_bus_timed_pop_filtered(
         bus, GST_CLOCK_TIME_NONE, GST_MESSAGE_ELEMENT | GST_MESSAGE_EOS | GST_MESSAGE_ERROR);
     switch (GST_MESSAGE_TYPE(msg)) {
       case GST_MESSAGE_ELEMENT:
