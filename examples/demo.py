@@ -59,10 +59,13 @@ class HandScene:
         return m
 
     def frame(self, mask):
+        """RGBx: 4 bytes a pixel, so rows need no padding at any width."""
         img = self.background.copy()
         img[mask] = (205, 160, 130)  # an evenly coloured object, as the paper assumes
         img += self.rng.normal(0, 4, img.shape)
-        return np.clip(img, 0, 255).astype(np.uint8)
+        rgbx = np.zeros((self.h, self.w, 4), np.uint8)
+        rgbx[..., :3] = np.clip(img, 0, 255)
+        return rgbx
 
 
 def truth(mask):
@@ -86,7 +89,7 @@ def main():
     video = os.path.join(args.out, 'demo.webm')
     pipeline = Gst.parse_launch(
         f'appsrc name=src is-live=false format=time '
-        f'caps=video/x-raw,format=RGB,width={args.width},height={args.height},framerate=30/1 ! '
+        f'caps=video/x-raw,format=RGBx,width={args.width},height={args.height},framerate=30/1 ! '
         f'videoconvert ! projtrack name=tracker draw=true method={args.method} '
         f'inner-point-x={int(cx)} inner-point-y={int(cy)} ! '
         f'videoconvert ! vp8enc deadline=1 cpu-used=8 ! webmmux ! filesink location={video}')
@@ -129,8 +132,8 @@ def main():
                 row[f.replace('-', '_')] = s.get_value(f)
         rows.append(row)
     pipeline.set_state(Gst.State.NULL)
-    if error:
-        print(f'demo: pipeline error: {error}', file=sys.stderr)
+    if error or not rows:
+        print(f'demo: pipeline error: {error or "no projtrack message arrived"}', file=sys.stderr)
         return 1
 
     table = os.path.join(args.out, 'demo.csv')

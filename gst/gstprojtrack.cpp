@@ -20,7 +20,8 @@
  * bounding box, the centroid and the inner point.
  *
  * Luma formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444) are read in place; packed RGB formats
- * are converted to gray internally. The element works in place and never copies the frame.
+ * are converted to gray internally. The element works in place; without `draw` it maps frames
+ * read-only and never copies them.
  *
  * ## Example launch lines
  * |[
@@ -42,6 +43,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <string>
 #include <utility>
 #include <vector>
@@ -85,6 +87,7 @@ struct Stream {
   projtrack::Trace trace;
   std::vector<std::uint8_t> gray;  // packed RGB frames converted to gray
   int width = 0, height = 0;
+  int black_level = 0;  // of edge-detector=input: 16 in limited-range YUV
   Status last_status = Status::NoInnerPoint;
 };
 
@@ -92,9 +95,10 @@ struct Stream {
 
 struct _GstProjtrack {
   GstVideoFilter parent;
-  Settings* settings;   // GST_OBJECT_LOCK
-  SeedCommand pending;  // GST_OBJECT_LOCK
-  Stream* stream;       // streaming thread
+  Settings* settings;             // GST_OBJECT_LOCK
+  SeedCommand pending;            // GST_OBJECT_LOCK
+  int frame_width, frame_height;  // GST_OBJECT_LOCK: the negotiated size, for clicks
+  Stream* stream;                 // streaming thread
 };
 
 enum {
@@ -300,14 +304,20 @@ static gboolean gst_projtrack_set_info(GstVideoFilter* filter, GstCaps*, GstVide
   if (!self->stream) self->stream = new Stream;
   Stream& st = *self->stream;
   const int width = GST_VIDEO_INFO_WIDTH(in_info), height = GST_VIDEO_INFO_HEIGHT(in_info);
+  st.black_level =
+      GST_VIDEO_INFO_IS_YUV(in_info) && in_info->colorimetry.range == GST_VIDEO_COLOR_RANGE_16_235
+          ? 16
+          : 0;
+  GST_OBJECT_LOCK(self);
+  self->frame_width = width;
+  self->frame_height = height;
+  if (width != st.width || height != st.height) reseed_from_settings_locked(self);
+  GST_OBJECT_UNLOCK(self);
   if (width != st.width || height != st.height) {
     GST_DEBUG_OBJECT(self, "new frame size %dx%d: the track restarts", width, height);
     st.tracker.reset();
     st.width = width;
     st.height = height;
-    GST_OBJECT_LOCK(self);
-    reseed_from_settings_locked(self);
-    GST_OBJECT_UNLOCK(self);
   }
   return TRUE;
 }
@@ -322,7 +332,8 @@ static gboolean gst_projtrack_stop(GstBaseTransform* trans) {
   return TRUE;
 }
 
-// Left click: track from the clicked pixel. Right click: stop tracking.
+// Left click in the picture: track from the clicked pixel. Right click: stop tracking. Clicks
+// outside the picture (a letterboxed window's borders) are ignored.
 static gboolean gst_projtrack_src_event(GstBaseTransform* trans, GstEvent* event) {
   auto* self = GST_PROJTRACK(trans);
   if (GST_EVENT_TYPE(event) == GST_EVENT_NAVIGATION &&
@@ -333,20 +344,28 @@ static gboolean gst_projtrack_src_event(GstBaseTransform* trans, GstEvent* event
         (button == 1 || button == 3) && std::isfinite(x) && std::isfinite(y)) {
       GST_OBJECT_LOCK(self);
       Settings& s = *self->settings;
-      if (button == 1 && x >= 0 && y >= 0 && x < G_MAXINT && y < G_MAXINT) {
-        s.seed_x = static_cast<int>(std::lround(x));
-        s.seed_y = static_cast<int>(std::lround(y));
-        self->pending = SeedCommand::Seed;
-      } else {
+      const double px = std::round(x), py = std::round(y);
+      const bool in_picture =
+          px >= 0 && py >= 0 && px < self->frame_width && py < self->frame_height;
+      bool changed = true;
+      if (button == 3) {
         s.seed_x = s.seed_y = -1;
         self->pending = SeedCommand::Reset;
+      } else if (in_picture) {
+        s.seed_x = static_cast<int>(px);
+        s.seed_y = static_cast<int>(py);
+        self->pending = SeedCommand::Seed;
+      } else {
+        changed = false;
       }
       const int sx = s.seed_x, sy = s.seed_y;
       GST_OBJECT_UNLOCK(self);
-      GST_INFO_OBJECT(self, "click (button %d) at %.1f, %.1f: inner point %d, %d", button, x, y, sx,
-                      sy);
-      g_object_notify_by_pspec(G_OBJECT(self), properties[PROP_INNER_POINT_X]);
-      g_object_notify_by_pspec(G_OBJECT(self), properties[PROP_INNER_POINT_Y]);
+      GST_INFO_OBJECT(self, "click (button %d) at %.1f, %.1f: %s inner point %d, %d", button, x, y,
+                      changed ? "new" : "outside the picture, kept the", sx, sy);
+      if (changed) {
+        g_object_notify_by_pspec(G_OBJECT(self), properties[PROP_INNER_POINT_X]);
+        g_object_notify_by_pspec(G_OBJECT(self), properties[PROP_INNER_POINT_Y]);
+      }
     }
   }
   return GST_BASE_TRANSFORM_CLASS(gst_projtrack_parent_class)->src_event(trans, event);
@@ -399,9 +418,37 @@ static GstMessage* features_message(GstProjtrack* self, GstBuffer* buffer, const
   return gst_message_new_element(GST_OBJECT(self), s);
 }
 
-static GstFlowReturn gst_projtrack_transform_frame_ip(GstVideoFilter* filter,
-                                                      GstVideoFrame* frame) {
-  auto* self = GST_PROJTRACK(filter);
+// Runs edges + estimator on one mapped frame, and draws when asked.
+static Features process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
+                        SeedCommand command) {
+  Stream& st = *self->stream;
+  if (command == SeedCommand::Seed)
+    st.tracker.seed({s.seed_x, s.seed_y});
+  else if (command == SeedCommand::Reset)
+    st.tracker.reset();
+  projtrack::EdgeParams edge_params = s.edges;
+  edge_params.input_black_level = st.black_level;
+  const projtrack::ImageView gray = projtrack::gst::frame_gray(frame, st.gray);
+  const projtrack::ImageView edges = st.edge_map.detect(gray, edge_params);
+  projtrack::Trace* trace = s.draw ? &st.trace : nullptr;
+  Features f = st.tracker.track(edges, s.method, s.params, trace);
+  if (s.draw) {
+    projtrack::gst::draw_overlay(frame, s.method, f, st.trace);
+    if (st.trace.rays_not_recorded)
+      GST_LOG_OBJECT(self, "overlay: %zu rays not recorded", st.trace.rays_not_recorded);
+  }
+  return f;
+}
+
+// In place, as GstVideoFilter would, but the frame is mapped for writing only when the overlay
+// draws: a read-only map never copies a buffer that another branch (a tee) shares.
+static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
+  auto* self = GST_PROJTRACK(trans);
+  auto* filter = GST_VIDEO_FILTER(trans);
+  if (!filter->negotiated || !self->stream) {
+    GST_ELEMENT_ERROR(self, CORE, NEGOTIATION, (nullptr), ("no format negotiated"));
+    return GST_FLOW_NOT_NEGOTIATED;
+  }
   const auto start = std::chrono::steady_clock::now();
 
   GST_OBJECT_LOCK(self);
@@ -409,19 +456,24 @@ static GstFlowReturn gst_projtrack_transform_frame_ip(GstVideoFilter* filter,
   const SeedCommand command = std::exchange(self->pending, SeedCommand::None);
   GST_OBJECT_UNLOCK(self);
 
+  GstVideoFrame frame;
+  if (!gst_video_frame_map(&frame, &filter->in_info, buffer,
+                           s.draw ? GST_MAP_READWRITE : GST_MAP_READ)) {
+    GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Could not map the video frame"), (nullptr));
+    return GST_FLOW_ERROR;
+  }
+  Features f;
+  try {
+    f = process(self, &frame, s, command);
+  } catch (const std::exception& e) {  // e.g. std::bad_alloc: never unwind into GStreamer's C
+    gst_video_frame_unmap(&frame);
+    GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Tracking failed: %s", e.what()), (nullptr));
+    return GST_FLOW_ERROR;
+  }
+  gst_video_frame_unmap(&frame);
+  if (f.valid()) attach_meta(buffer, f, s.method);
+
   Stream& st = *self->stream;
-  if (command == SeedCommand::Seed)
-    st.tracker.seed({s.seed_x, s.seed_y});
-  else if (command == SeedCommand::Reset)
-    st.tracker.reset();
-
-  const projtrack::ImageView gray = projtrack::gst::frame_gray(frame, st.gray);
-  const projtrack::ImageView edges = st.edge_map.detect(gray, s.edges);
-  projtrack::Trace* trace = s.draw ? &st.trace : nullptr;
-  const Features f = st.tracker.track(edges, s.method, s.params, trace);
-  if (f.valid()) attach_meta(frame->buffer, f, s.method);
-  if (s.draw) projtrack::gst::draw_overlay(frame, s.method, f, st.trace);
-
   if (f.status != st.last_status) {
     if (f.status == Status::InvalidParameters)
       GST_WARNING_OBJECT(self, "invalid parameters: %s", f.detail.c_str());
@@ -437,7 +489,7 @@ static GstFlowReturn gst_projtrack_transform_frame_ip(GstVideoFilter* filter,
     const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
                         std::chrono::steady_clock::now() - start)
                         .count();
-    GstMessage* msg = features_message(self, frame->buffer, f, s.method, st.tracker.inner_point(),
+    GstMessage* msg = features_message(self, buffer, f, s.method, st.tracker.inner_point(),
                                        static_cast<guint64>(ns));
     gst_element_post_message(GST_ELEMENT(self), msg);  // never under the object lock
   }
@@ -454,6 +506,7 @@ static void gst_projtrack_finalize(GObject* object) {
 static void gst_projtrack_init(GstProjtrack* self) {
   self->settings = new Settings;
   self->pending = SeedCommand::None;
+  self->frame_width = self->frame_height = 0;
   self->stream = nullptr;
   // Metadata needs a writable buffer: never pass buffers through untouched.
   gst_base_transform_set_passthrough(GST_BASE_TRANSFORM(self), FALSE);
@@ -541,7 +594,7 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   trans_class->stop = GST_DEBUG_FUNCPTR(gst_projtrack_stop);
   trans_class->src_event = GST_DEBUG_FUNCPTR(gst_projtrack_src_event);
   filter_class->set_info = GST_DEBUG_FUNCPTR(gst_projtrack_set_info);
-  filter_class->transform_frame_ip = GST_DEBUG_FUNCPTR(gst_projtrack_transform_frame_ip);
+  trans_class->transform_ip = GST_DEBUG_FUNCPTR(gst_projtrack_transform_ip);
 
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_METHOD, static_cast<GstPluginAPIFlags>(0));
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_EDGE_DETECTOR, static_cast<GstPluginAPIFlags>(0));

@@ -45,8 +45,15 @@ class Painter {
     line({tl.x, br.y}, tl, c);
   }
   void square(Point2i p, int radius, Rgb c) {
-    for (int y = p.y - radius; y <= p.y + radius; ++y)
-      for (int x = p.x - radius; x <= p.x + radius; ++x) set(x, y, c);
+    // Clamped in 64 bits: the inner point may be anywhere, INT_MAX included.
+    const auto lo = [&](int v, int limit) {
+      return static_cast<int>(std::clamp<long long>(1LL * v - radius, 0, limit));
+    };
+    const auto hi = [&](int v, int limit) {
+      return static_cast<int>(std::clamp<long long>(1LL * v + radius, -1, limit - 1));
+    };
+    for (int y = lo(p.y, height_), y1 = hi(p.y, height_); y <= y1; ++y)
+      for (int x = lo(p.x, width_), x1 = hi(p.x, width_); x <= x1; ++x) set(x, y, c);
   }
   void cross(Point2d p, int radius, Rgb c) {
     line({p.x - radius, p.y}, {p.x + radius, p.y}, c);
@@ -108,11 +115,12 @@ void draw_overlay(GstVideoFrame* frame, Method method, const Features& features,
       for (int x = b.rect.x; x < b.rect.right(); ++x) paint.tint(x, y, kBlock);
     paint.outline(b.rect, kBlock);
   }
-  // The rays of the last iteration (the inner-point update's rays, iteration 0, are left out).
+  // The rays of the last iteration (the inner-point updates' rays, iteration 0, are left out).
+  const int last = trace.last_recorded_iteration();
   for (const Trace::Ray& r : trace.rays)
-    if (r.iteration == features.iterations) paint.line(r.origin, r.hit, kRay);
+    if (r.iteration == last && last > 0) paint.line(r.origin, r.hit, kRay);
   for (const Trace::Ray& r : trace.rays)
-    if (r.iteration == features.iterations) paint.square(round_to_pixel(r.hit), 1, kHit);
+    if (r.iteration == last && last > 0) paint.square(round_to_pixel(r.hit), 1, kHit);
   if (features.valid()) {
     paint.outline(features.bbox, kBox);
     paint.cross(features.centroid, 6, kCentroid);

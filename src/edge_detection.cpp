@@ -22,9 +22,13 @@ ImageView view_of(const cv::Mat& m) {
 
 ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params) {
   if (!gray.valid()) return {};
-  if (params.detector == EdgeDetector::Input) return gray;
-
   cv::Mat src = wrap(gray);
+  if (params.detector == EdgeDetector::Input) {
+    if (params.input_black_level <= 0) return gray;
+    cv::threshold(src, edges_, std::min(params.input_black_level, 255), 255, cv::THRESH_BINARY);
+    return view_of(edges_);
+  }
+
   const int passes = std::clamp(params.blur, 0, kMaxBlurPasses);
   for (int i = 0; i < passes; ++i) {
     cv::blur(src, blurred_[i % 2], cv::Size(3, 3), cv::Point(-1, -1), cv::BORDER_REPLICATE);

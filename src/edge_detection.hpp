@@ -10,7 +10,7 @@ namespace projtrack {
 enum class EdgeDetector {
   Canny,  // cv::Canny with hysteresis thresholds low/high (L1 gradient, 3×3 Sobel aperture)
   Sobel,  // |Gx| + |Gy| of the 3×3 Sobel >= low: thick edges, as the original system used
-  Input,  // the image already is an edge map: non-zero = edge (read in place, never copied)
+  Input,  // the image already is an edge map: above the black level = edge
 };
 
 inline constexpr int kMaxBlurPasses = 16;
@@ -22,15 +22,18 @@ struct EdgeParams {
   double low = 50;
   double high = 150;
   int blur = 1;  // 3×3 box-blur passes before detecting (0 = none; the original system used 2)
+  // EdgeDetector::Input: the value of "no edge". 0 reads the image in place (non-zero = edge);
+  // limited-range video stores black as 16, so an edge map there is luma > 16.
+  int input_black_level = 0;
 };
 
 // Owns the edge and blur buffers and reuses them: after the first frame of a given size, detect()
 // does not allocate.
 class EdgeMap {
  public:
-  // Detects the edges of `gray` and returns a view of them, valid until the next call (or, for
-  // EdgeDetector::Input, as long as `gray`'s pixels). An empty or invalid `gray` gives an empty
-  // view; out-of-range parameters are clamped (negative thresholds to 0, blur to
+  // Detects the edges of `gray` and returns a view of them, valid until the next call (for
+  // EdgeDetector::Input with black level 0: `gray` itself). An empty or invalid `gray` gives an
+  // empty view; out-of-range parameters are clamped (negative thresholds to 0, blur to
   // [0, kMaxBlurPasses]).
   ImageView detect(const ImageView& gray, const EdgeParams& params);
 

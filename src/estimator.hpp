@@ -63,7 +63,7 @@ void Estimator::iterate(const Context& ctx, Features& out, Work& work, bool rece
     out.iterations = it;
     if (ctx.trace) ctx.trace->iterations.push_back({p, c, out.area});
     const Point2i next =
-        recentre ? update_inner_point(ctx.edges, p, c, ctx.fan, update_hits_, work, ctx.trace, it)
+        recentre ? update_inner_point(ctx.edges, p, c, ctx.fan, update_hits_, work, ctx.trace, 0)
                  : move_toward(ctx.edges, p, round_to_pixel(c), work);
     const bool done = converged(p, next, c_prev, c, ctx.params.convergence);
     p = next;

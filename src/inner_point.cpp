@@ -33,10 +33,11 @@ Point2i move_toward(const ImageView& edges, Point2i from, Point2i to, Work& work
   const int dx = to.x - from.x, dy = to.y - from.y;
   const int steps = std::max(std::abs(dx), std::abs(dy));
   if (steps == 0) return from;
-  const std::int64_t sx = (static_cast<std::int64_t>(dx) << 16) / steps;
-  const std::int64_t sy = (static_cast<std::int64_t>(dy) << 16) / steps;
-  std::int64_t fx = static_cast<std::int64_t>(from.x) << 16;
-  std::int64_t fy = static_cast<std::int64_t>(from.y) << 16;
+  // 16.16 fixed point; multiplications, since shifting a negative value left is undefined.
+  const std::int64_t sx = static_cast<std::int64_t>(dx) * 65536 / steps;
+  const std::int64_t sy = static_cast<std::int64_t>(dy) * 65536 / steps;
+  std::int64_t fx = static_cast<std::int64_t>(from.x) * 65536;
+  std::int64_t fy = static_cast<std::int64_t>(from.y) * 65536;
   int x = from.x, y = from.y;
   for (int i = 1; i <= steps; ++i) {
     fx += sx;
@@ -58,7 +59,7 @@ Point2i recentre(const ImageView& edges, Point2i p, const RayFan& fan, std::vect
   scratch.clear();
   const Point2d mean = cast_fan(edges, p, fan, scratch, work);
   if (trace) {
-    for (const RayHit& h : scratch) trace->rays.push_back({to_double(p), h.hit, iteration, 1});
+    for (const RayHit& h : scratch) trace->add_ray({to_double(p), h.hit, iteration, 1});
   }
   return move_toward(edges, p, round_to_pixel(mean), work);
 }

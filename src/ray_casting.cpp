@@ -13,7 +13,7 @@ void trace_fan(Trace* trace, Point2i origin, const RayHit* hits, int count, int 
                int level) {
   if (!trace) return;
   for (int i = 0; i < count; ++i)
-    trace->rays.push_back({to_double(origin), hits[i].hit, iteration, level});
+    trace->add_ray({to_double(origin), hits[i].hit, iteration, level});
 }
 
 void RayCasting::run(const Context& ctx, Features& out, Work& work) {

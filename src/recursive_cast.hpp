@@ -39,7 +39,7 @@ Point2d RecursiveCast::cast(const ImageView& edges, Point2i origin, const RayFan
         const RayHit h = fan.cast(edges, o, k, visit);
         work.pixels += h.length + 1;
         hits_.push_back(h);
-        if (trace) trace->rays.push_back({to_double(o), h.hit, iteration, level});
+        if (trace) trace->add_ray({to_double(o), h.hit, iteration, level});
       }
     }
     work.rays += hits_.size();

@@ -9,11 +9,14 @@ namespace projtrack {
 
 // Pass a Trace to Estimator::estimate() to get it filled; pass none and nothing is recorded.
 // The vectors keep their capacity across frames, so a reused Trace does not allocate per frame.
+// Rays are recorded up to kMaxRays (n^y methods can cast millions); later ones are only counted.
 struct Trace {
+  static constexpr std::size_t kMaxRays = 1 << 17;
+
   struct Ray {
     Point2d origin;
     Point2d hit;    // where it met an edge or the frame border
-    int iteration;  // 1-based; 0 for the final inner-point update
+    int iteration;  // 1-based; 0 for the rays of inner-point updates
     int level;      // 1 for rays from the inner point, 2.. for recast rays (n^y methods)
   };
   struct Block {
@@ -31,11 +34,26 @@ struct Trace {
   };
 
   std::vector<Ray> rays;
+  std::size_t rays_not_recorded = 0;
   std::vector<Block> blocks;
   std::vector<Run> runs;  // pixel-filling: row runs; grid-filling: grid-line runs
   std::vector<Iteration> iterations;
 
+  void add_ray(const Ray& r) {
+    if (rays.size() < kMaxRays)
+      rays.push_back(r);
+    else
+      ++rays_not_recorded;
+  }
+  // The last iteration whose rays were recorded (0 when none were).
+  int last_recorded_iteration() const {
+    int last = 0;
+    for (const Ray& r : rays) last = r.iteration > last ? r.iteration : last;
+    return last;
+  }
+
   void clear() {
+    rays_not_recorded = 0;
     rays.clear();
     blocks.clear();
     runs.clear();

@@ -40,6 +40,21 @@ TEST(EdgeMap, InputIsReadInPlace) {
   EXPECT_EQ(e.stride, static_cast<std::ptrdiff_t>(img.step));
 }
 
+TEST(EdgeMap, InputAboveABlackLevel) {
+  // Limited-range video stores black as 16: an edge map there has 16 for "no edge".
+  cv::Mat img(20, 30, CV_8U, cv::Scalar(16));
+  img(cv::Rect(5, 5, 10, 1)).setTo(235);
+  EdgeMap map;
+  EdgeParams p;
+  p.detector = EdgeDetector::Input;
+  p.input_black_level = 16;
+  const ImageView e = map.detect(view_of(img), p);
+  EXPECT_NE(e.data, img.data);
+  EXPECT_EQ(count_edges(e), 10);
+  p.input_black_level = 0;
+  EXPECT_EQ(count_edges(map.detect(view_of(img), p)), 30 * 20);
+}
+
 TEST(EdgeMap, CannyAndSobelCloseTheContourOfADisc) {
   const cv::Mat img = grey_disc();
   const double disc_area = 3.14159265 * 50 * 50;

@@ -212,10 +212,18 @@ TEST(RasterizedRayCasting, BlocksAreAlignedToTheFrameAndCoverTheObject) {
   EXPECT_GE(f.area, disc.area);
 }
 
+// The rightmost interior pixel of row y: next to the object's right contour (on the ring, its
+// outer one), where a gap opens straight to the outside.
+Point2i rightmost_interior(const Scene& s, int y) {
+  for (int x = s.interior.cols - 1; x >= 0; --x)
+    if (s.is_interior({x, y})) return {x, y};
+  return {-1, y};
+}
+
 TEST(Leaks, PixelFillingLeaksThroughAOnePixelGap) {
-  for (Scene s : {test::disc_scene(), test::hand_scene()}) {
-    const Point2i inside = round_to_pixel(s.centroid);
-    const Point2i gap = test::open_gap_right(s, inside.x, inside.y + 1);
+  for (Scene s : test::all_scenes()) {
+    const Point2i inside = rightmost_interior(s, round_to_pixel(s.centroid).y + 1);
+    const Point2i gap = test::open_gap_right(s, inside.x, inside.y);
     const Features f = make_estimator(Method::PixelFilling)->estimate(s.edge_view(), inside, {});
     EXPECT_GE(f.area, 4 * s.area) << s.name << " gap at " << gap.x << ", " << gap.y;
     EXPECT_NE(f.status, Status::Ok) << s.name;  // it reached the frame border
@@ -225,9 +233,9 @@ TEST(Leaks, PixelFillingLeaksThroughAOnePixelGap) {
 TEST(Leaks, GridFillingHoldsWhenTheGapFallsBetweenGridLinesAndLeaksOnOne) {
   Params p = paper_params();
   auto grid = make_estimator(Method::GridFilling);
-  for (Scene s : {test::disc_scene(), test::hand_scene()}) {
-    const Point2i c = round_to_pixel(s.centroid);
-    const Point2i gap = test::open_gap_right(s, c.x, c.y + 1);
+  for (Scene s : test::all_scenes()) {
+    const Point2i next_to_gap = rightmost_interior(s, round_to_pixel(s.centroid).y + 1);
+    const Point2i gap = test::open_gap_right(s, next_to_gap.x, next_to_gap.y);
     // Seeds whose grid rows and columns all miss the gap pixel.
     int checked = 0;
     for (Point2i seed : test::interior_points(s, 3)) {
@@ -241,7 +249,7 @@ TEST(Leaks, GridFillingHoldsWhenTheGapFallsBetweenGridLinesAndLeaksOnOne) {
     }
     EXPECT_GT(checked, 100) << s.name;
     // A seed on the gap's row sends a grid line straight through it.
-    const Features leak = grid->estimate(s.edge_view(), {c.x, gap.y}, p);
+    const Features leak = grid->estimate(s.edge_view(), next_to_gap, p);
     EXPECT_GE(leak.area, 3 * s.area) << s.name;
   }
 }

@@ -344,6 +344,63 @@ TEST_F(Element, ClickSetsTheInnerPointAndRightClickStops) {
   EXPECT_EQ(x, -1);
 }
 
+TEST_F(Element, ClicksOutsideThePictureAreIgnored) {
+  const DiscFrame scene{240, 180, 70, 90, 30};
+  set_caps(scene, "GRAY8");
+  seed(70, 90);
+  gst_buffer_unref(push(scene.gray8(), 0));
+  for (auto [x, y] : {std::pair{-5.0, 10.0}, std::pair{10.0, -1.0}, std::pair{240.0, 10.0},
+                      std::pair{10.0, 500.0}}) {
+    gst_harness_push_upstream_event(
+        h_, gst_navigation_event_new_mouse_button_press(1, x, y, GST_NAVIGATION_MODIFIER_NONE));
+    gint sx = 0, sy = 0;
+    g_object_get(h_->element, "inner-point-x", &sx, "inner-point-y", &sy, nullptr);
+    EXPECT_EQ(sx, 70) << x << ", " << y;
+    EXPECT_EQ(sy, 90) << x << ", " << y;
+  }
+  while (GstMessage* m = message()) gst_message_unref(m);
+  gst_buffer_unref(push(scene.gray8(), 1));
+  GstMessage* m = message();
+  EXPECT_EQ(status_of(m), "ok");
+  gst_message_unref(m);
+}
+
+TEST_F(Element, InnerPointFarOutsideGetsAStatusEvenWhenDrawing) {
+  const DiscFrame scene{64, 48, 32, 24, 10};
+  set_caps(scene, "I420");
+  g_object_set(h_->element, "draw", TRUE, nullptr);
+  seed(G_MAXINT, G_MAXINT);
+  GstBuffer* out = push(convert(scene, "I420"));
+  GstMessage* m = message();
+  EXPECT_EQ(status_of(m), "inner-point-outside");
+  EXPECT_EQ(gst_buffer_get_video_region_of_interest_meta(out), nullptr);
+  gst_message_unref(m);
+  gst_buffer_unref(out);
+}
+
+// An edge map in limited-range YUV stores "no edge" as 16: the element reads it as black.
+TEST_F(Element, InputEdgeMapsInLimitedRangeYuv) {
+  const projtrack::test::Scene ring = projtrack::test::ring_scene();
+  const DiscFrame caps{ring.edges.cols, ring.edges.rows, 0, 0, 0};
+  GstHarness* to_yuv = gst_harness_new("videoconvert");
+  gst_harness_set_src_caps_str(to_yuv, caps.caps("GRAY8").c_str());
+  gst_harness_set_sink_caps_str(to_yuv, caps.caps("NV12").c_str());
+  GstBuffer* nv12 =
+      gst_harness_push_and_pull(to_yuv, gst_buffer_new_memdup(ring.edges.data, ring.edges.total()));
+  gst_harness_teardown(to_yuv);
+
+  set_caps(caps, "NV12");
+  gst_util_set_object_arg(G_OBJECT(h_->element), "edge-detector", "input");
+  gst_util_set_object_arg(G_OBJECT(h_->element), "method", "pixel-filling");
+  seed(100, 55);
+  gst_buffer_unref(push(nv12));
+  GstMessage* m = message();
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(status_of(m), "ok");
+  EXPECT_EQ(get_double(gst_message_get_structure(m), "area"), ring.area);
+  gst_message_unref(m);
+}
+
 bool same_bytes(GstBuffer* a, GstBuffer* b) {
   GstMapInfo ma, mb;
   gst_buffer_map(a, &ma, GST_MAP_READ);
