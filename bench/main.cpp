@@ -1,0 +1,386 @@
+// projtrack-bench: the paper's comparison, measured. Generates scenes with exact ground truth,
+// runs every estimator (and the stock-OpenCV peers) from many inner points, sweeps the
+// parameters, draws the paper's figures, and writes CSVs for bench/report.py.
+//
+//   projtrack-bench [--quick] [--out DIR] [--seeds N] [--reps N]
+#include <sys/utsname.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <opencv2/core/utility.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "estimator.hpp"
+#include "figures.hpp"
+#include "peers.hpp"
+#include "progress.hpp"
+#include "scene.hpp"
+
+namespace projtrack::bench {
+namespace {
+
+constexpr double kLeakFactor = 1.5;  // an estimate above 1.5× the true area leaked
+
+struct Options {
+  bool quick = false;
+  std::string out = "docs/benchmarks";
+  int seeds = 24;
+  int reps = 3;
+  std::string command;
+};
+
+template <class F>
+double time_us(F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  f();
+  return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+// One estimator or peer, behind one call.
+struct Contender {
+  std::string name;
+  std::function<Features(const Scene&, Point2i, const Params&, Trace*)> run;
+};
+
+std::vector<Contender> contenders(bool with_peers) {
+  std::vector<Contender> all;
+  for (Method m : kAllMethods) {
+    auto est = std::shared_ptr<Estimator>(make_estimator(m));
+    all.push_back({std::string(method_name(m)),
+                   [est](const Scene& s, Point2i seed, const Params& p, Trace* t) {
+                     const ImageView e(s.edges.data, s.edges.cols, s.edges.rows,
+                                       static_cast<std::ptrdiff_t>(s.edges.step));
+                     return est->estimate(e, seed, p, t);
+                   }});
+  }
+  if (with_peers) {
+    auto flood = std::make_shared<OpenCvFloodFill>();
+    auto comps = std::make_shared<OpenCvComponents>();
+    all.push_back({"opencv-floodfill", [flood](const Scene& s, Point2i seed, const Params&,
+                                               Trace*) { return flood->estimate(s.edges, seed); }});
+    all.push_back(
+        {"opencv-components", [comps](const Scene& s, Point2i seed, const Params&, Trace*) {
+           return comps->estimate(s.edges, seed);
+         }});
+  }
+  return all;
+}
+
+const char* kRunColumns =
+    "resolution,width,height,object,gap_rate,spurious,instance,method,part,seed_x,seed_y,status,"
+    "centroid_x,centroid_y,area,true_centroid_x,true_centroid_y,true_area,centroid_error_px,"
+    "centroid_error_rel,area_error,leak,iterations,rays_cast,pixels_visited,time_us";
+
+void write_run(std::ostream& o, const Scene& s, const std::string& method, const Seed& seed,
+               const Features& f, double us) {
+  const SceneSpec& sp = s.spec;
+  o << sp.width << 'x' << sp.height << ',' << sp.width << ',' << sp.height << ','
+    << object_name(sp.object) << ',' << sp.gap_rate << ',' << sp.spurious << ',' << sp.instance
+    << ',' << method << ',' << seed.part << ',' << seed.p.x << ',' << seed.p.y << ','
+    << status_name(f.status) << ',';
+  if (f.valid()) {
+    const double err = distance(f.centroid, s.true_centroid);
+    o << f.centroid.x << ',' << f.centroid.y << ',' << f.area << ',';
+    o << s.true_centroid.x << ',' << s.true_centroid.y << ',' << s.true_area << ',' << err << ','
+      << err / std::sqrt(s.true_area) << ',' << f.area / s.true_area - 1 << ','
+      << (f.area > kLeakFactor * s.true_area) << ',';
+  } else {
+    o << ",,," << s.true_centroid.x << ',' << s.true_centroid.y << ',' << s.true_area << ",,,,1,";
+  }
+  o << f.iterations << ',' << f.rays_cast << ',' << f.pixels_visited << ',' << us << '\n';
+}
+
+std::vector<SceneSpec> scene_specs(const Options& opt) {
+  std::vector<SceneSpec> specs;
+  const std::vector<std::pair<int, int>> sizes =
+      opt.quick ? std::vector<std::pair<int, int>>{{640, 480}}
+                : std::vector<std::pair<int, int>>{{640, 480}, {1920, 1080}};
+  const std::vector<double> rates =
+      opt.quick ? std::vector<double>{0, 0.05} : std::vector<double>{0, 0.01, 0.02, 0.05, 0.10};
+  const std::vector<bool> spurious =
+      opt.quick ? std::vector<bool>{false} : std::vector<bool>{false, true};
+  const int instances = opt.quick ? 1 : 2;
+  for (auto [w, h] : sizes)
+    for (Object o : {Object::Sphere, Object::Hand})
+      for (double r : rates)
+        for (bool sp : spurious)
+          for (int i = 0; i < instances; ++i) specs.push_back({w, h, o, r, sp, i});
+  return specs;
+}
+
+// Runs `c` from every seed, `reps` times each (the first call on a scene warms up buffers).
+void run_scene(const Scene& s, const std::vector<Seed>& seeds, Contender& c, const Params& p,
+               int reps, std::ostream& csv, const std::string& prefix) {
+  c.run(s, seeds.front().p, p, nullptr);
+  for (const Seed& seed : seeds) {
+    std::vector<double> times;
+    Features f;
+    for (int r = 0; r < reps; ++r)
+      times.push_back(time_us([&] { f = c.run(s, seed.p, p, nullptr); }));
+    csv << prefix;
+    write_run(csv, s, c.name, seed, f, median(times));
+  }
+}
+
+void write_scene_row(std::ostream& o, const Scene& s, bool consistent) {
+  const SceneSpec& sp = s.spec;
+  o << sp.width << 'x' << sp.height << ',' << object_name(sp.object) << ',' << sp.gap_rate << ','
+    << sp.spurious << ',' << sp.instance << ',' << s.true_area << ',' << s.true_centroid.x << ','
+    << s.true_centroid.y << ',' << s.supersampled_area << ',' << s.supersampled_centroid.x << ','
+    << s.supersampled_centroid.y << ',' << s.analytic_area << ',' << s.contour_pixels << ','
+    << s.natural_gaps << ',' << s.gap_pixels_removed << ',' << s.spurious_pixels << ','
+    << cv::countNonZero(s.edges) << ',' << consistent << '\n';
+}
+
+// Edge detection and a frame copy (the floor of any per-frame work), per resolution.
+void time_edges(const Options& opt, std::ostream& csv) {
+  csv << "resolution,stage,time_us\n";
+  for (auto [w, h] : {std::pair{640, 480}, std::pair{1920, 1080}}) {
+    const Scene s = make_scene({w, h, Object::Hand, 0, false, 0}, EdgeParams{});
+    const ImageView gray(s.image.data, w, h, static_cast<std::ptrdiff_t>(s.image.step));
+    EdgeMap map;
+    cv::Mat copy;
+    const int n = opt.quick ? 3 : 25;
+    for (auto [name, detector] :
+         {std::pair{"canny", EdgeDetector::Canny}, std::pair{"sobel", EdgeDetector::Sobel}}) {
+      EdgeParams ep;
+      ep.detector = detector;
+      std::vector<double> t;
+      map.detect(gray, ep);
+      for (int i = 0; i < n; ++i) t.push_back(time_us([&] { map.detect(gray, ep); }));
+      csv << w << 'x' << h << ',' << name << ',' << median(t) << '\n';
+    }
+    std::vector<double> t;
+    s.image.copyTo(copy);
+    for (int i = 0; i < n; ++i) t.push_back(time_us([&] { s.image.copyTo(copy); }));
+    csv << w << 'x' << h << ",frame-copy," << median(t) << '\n';
+  }
+}
+
+// One parameter at a time, away from the defaults, on the 640×480 scenes.
+void sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progress& progress) {
+  struct Axis {
+    std::string name;
+    std::vector<double> values;
+    std::vector<Method> methods;
+    std::function<void(Params&, double)> set;
+  };
+  const std::vector<Method> rays_methods = {Method::RayCasting, Method::IterativeRayCasting,
+                                            Method::RecursiveRayCasting,
+                                            Method::RasterizedRayCasting};
+  const std::vector<Method> iterative = {Method::IterativeRayCasting, Method::RecursiveRayCasting,
+                                         Method::RasterizedRayCasting};
+  std::vector<Axis> axes = {
+      {"grid_size",
+       {2, 3, 4, 6, 8, 12, 16},
+       {Method::GridFilling},
+       [](Params& p, double v) { p.grid_size = int(v); }},
+      {"block_size",
+       {4, 6, 8, 12, 16},
+       {Method::RasterizedRayCasting},
+       [](Params& p, double v) { p.block_size = int(v); }},
+      {"rays", {8, 16, 32, 64}, rays_methods, [](Params& p, double v) { p.rays = int(v); }},
+      {"recursion",
+       {1, 2, 3},
+       {Method::RecursiveRayCasting, Method::RasterizedRayCasting},
+       [](Params& p, double v) {
+         p.recursion = int(v);
+         p.rays = std::min(p.rays, 16);
+       }},
+      {"max_iterations",
+       {1, 2, 3, 5, 10, 20},
+       iterative,
+       [](Params& p, double v) { p.max_iterations = int(v); }},
+      {"convergence", {0.5, 1, 2, 4, 8}, iterative, [](Params& p, double v) { p.convergence = v; }},
+  };
+  if (opt.quick)
+    for (Axis& a : axes) a.values.resize(2);
+  csv << "parameter,value," << kRunColumns << '\n';
+  const std::vector<double> rates =
+      opt.quick ? std::vector<double>{0.05} : std::vector<double>{0, 0.02, 0.05};
+  std::vector<Scene> scenes;
+  for (Object o : {Object::Sphere, Object::Hand})
+    for (double r : rates)
+      for (bool sp : {false, true})
+        scenes.push_back(make_scene({640, 480, o, r, sp, 0}, EdgeParams{}));
+  std::mt19937 rng(42);
+  std::vector<std::vector<Seed>> seeds;
+  for (const Scene& s : scenes) seeds.push_back(sample_seeds(s, opt.quick ? 4 : 12, rng));
+  for (const Axis& a : axes) {
+    for (double v : a.values) {
+      Params p = defaults;
+      a.set(p, v);
+      for (Method m : a.methods) {
+        Contender c{std::string(method_name(m)), nullptr};
+        auto est = std::shared_ptr<Estimator>(make_estimator(m));
+        c.run = [est](const Scene& s, Point2i seed, const Params& q, Trace* t) {
+          const ImageView e(s.edges.data, s.edges.cols, s.edges.rows,
+                            static_cast<std::ptrdiff_t>(s.edges.step));
+          return est->estimate(e, seed, q, t);
+        };
+        std::ostringstream prefix;
+        prefix << a.name << ',' << v << ',';
+        for (std::size_t i = 0; i < scenes.size(); ++i)
+          run_scene(scenes[i], seeds[i], c, p, 1, csv, prefix.str());
+      }
+      progress.advance("sweep " + a.name);
+    }
+  }
+}
+
+void figures(const Options& opt, const Params& p) {
+  const std::string dir = opt.out + "/figures";
+  for (Object o : {Object::Sphere, Object::Hand}) {
+    const Scene s = make_scene({640, 480, o, 0, false, 0}, EdgeParams{});
+    // Start where the paper says ray-casting struggles: off centre on the sphere, in a finger.
+    std::mt19937 rng(3);
+    Point2i seed = round_to_pixel(s.true_centroid);
+    for (const Part& part : s.parts)
+      if (part.name == "finger2" || part.name == "sphere") {
+        std::vector<cv::Point> px;
+        cv::findNonZero(part.mask, px);
+        std::sort(px.begin(), px.end(), [](auto a, auto b) { return a.y < b.y; });
+        const cv::Point q = px[part.name == "sphere" ? px.size() * 3 / 4 : px.size() / 3];
+        seed = {q.x, q.y};
+      }
+    cv::Rect focus = cv::boundingRect(s.mask);
+    focus -= cv::Point(30, 30);
+    focus += cv::Size(60, 60);
+    for (Method m : kAllMethods) {
+      Trace trace;
+      const ImageView e(s.edges.data, s.edges.cols, s.edges.rows,
+                        static_cast<std::ptrdiff_t>(s.edges.step));
+      const Features f = make_estimator(m)->estimate(e, seed, p, &trace);
+      const cv::Mat fig = draw_figure(s.image, s.edges, m, f, trace, s.true_centroid, focus);
+      cv::imwrite(dir + "/" + std::string(method_name(m)) + "-" + object_name(o) + ".png", fig);
+    }
+  }
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+
+void write_meta(const Options& opt, const Params& p, int scenes, int inconsistent) {
+  std::ofstream o(opt.out + "/meta.json");
+  const std::time_t now = std::time(nullptr);
+  char date[32];
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  utsname u{};
+  uname(&u);
+  o << "{\n  \"command\": \"" << opt.command << "\",\n  \"date\": \"" << date
+    << "\",\n  \"quick\": " << (opt.quick ? "true" : "false") << ",\n  \"cpu\": \"" << cpu_model()
+    << "\",\n  \"cores\": " << cv::getNumberOfCPUs() << ",\n  \"threads_used\": 1"
+    << ",\n  \"kernel\": \"" << u.sysname << ' ' << u.release << "\",\n  \"opencv\": \""
+    << CV_VERSION << "\",\n  \"compiler\": \"" << __VERSION__
+    << "\",\n  \"seeds_per_scene\": " << opt.seeds << ",\n  \"repetitions\": " << opt.reps
+    << ",\n  \"scenes\": " << scenes << ",\n  \"inconsistent_scenes\": " << inconsistent
+    << ",\n  \"leak_factor\": " << kLeakFactor << ",\n  \"params\": {\"rays\": " << p.rays
+    << ", \"recursion\": " << p.recursion << ", \"block_size\": " << p.block_size
+    << ", \"grid_size\": " << p.grid_size << ", \"max_iterations\": " << p.max_iterations
+    << ", \"convergence\": " << p.convergence
+    << "},\n  \"edges\": {\"detector\": \"canny\", \"low\": " << EdgeParams{}.low
+    << ", \"high\": " << EdgeParams{}.high << ", \"blur\": " << EdgeParams{}.blur << "}\n}\n";
+}
+
+int run(const Options& opt) {
+  cv::setNumThreads(1);
+  std::filesystem::create_directories(opt.out + "/figures");
+  const Params defaults;
+  const std::vector<SceneSpec> specs = scene_specs(opt);
+  auto all = contenders(true);
+  Progress progress(static_cast<long>(specs.size()) + (opt.quick ? 12 : 30));
+
+  std::ofstream runs(opt.out + "/runs.csv"), scenes(opt.out + "/scenes.csv");
+  runs.precision(10);
+  scenes.precision(10);
+  runs << kRunColumns << '\n';
+  scenes << "resolution,object,gap_rate,spurious,instance,true_area,true_centroid_x,"
+            "true_centroid_y,supersampled_area,supersampled_centroid_x,supersampled_centroid_y,"
+            "analytic_area,contour_pixels,natural_gaps,gap_pixels_removed,spurious_pixels,"
+            "edge_pixels,truth_consistent\n";
+  int inconsistent = 0;
+  std::mt19937 rng(1);
+  for (const SceneSpec& spec : specs) {
+    const Scene s = make_scene(spec, EdgeParams{});
+    std::string why;
+    const bool ok = truth_is_consistent(s, &why);
+    if (!ok) {
+      ++inconsistent;
+      std::cerr << "\nground truth of " << object_name(spec.object) << ' ' << spec.width << 'x'
+                << spec.height << " disagrees with the independent count: " << why << '\n';
+    }
+    write_scene_row(scenes, s, ok);
+    const std::vector<Seed> seeds = sample_seeds(s, opt.seeds, rng);
+    for (Contender& c : all) run_scene(s, seeds, c, defaults, opt.reps, runs, "");
+    std::ostringstream what;
+    what << object_name(spec.object) << ' ' << spec.width << 'x' << spec.height << " gaps "
+         << spec.gap_rate * 100 << '%';
+    progress.advance(what.str());
+  }
+  std::ofstream edges(opt.out + "/edges.csv");
+  time_edges(opt, edges);
+  std::ofstream sweep_csv(opt.out + "/sweep.csv");
+  sweep_csv.precision(10);
+  sweep(opt, defaults, sweep_csv, progress);
+  figures(opt, defaults);
+  write_meta(opt, defaults, static_cast<int>(specs.size()), inconsistent);
+  return inconsistent ? 1 : 0;
+}
+
+}  // namespace
+}  // namespace projtrack::bench
+
+int main(int argc, char** argv) {
+  projtrack::bench::Options opt;
+  opt.command = "projtrack-bench";
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    opt.command += " " + a;
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::cerr << a << " needs a value\n";
+        std::exit(2);
+      }
+      opt.command += std::string(" ") + argv[i + 1];
+      return argv[++i];
+    };
+    if (a == "--quick") {
+      opt.quick = true;
+      opt.seeds = 6;
+      opt.reps = 1;
+    } else if (a == "--out") {
+      opt.out = value();
+    } else if (a == "--seeds") {
+      opt.seeds = std::max(1, std::atoi(value().c_str()));
+    } else if (a == "--reps") {
+      opt.reps = std::max(1, std::atoi(value().c_str()));
+    } else {
+      std::cerr << "usage: projtrack-bench [--quick] [--out DIR] [--seeds N] [--reps N]\n";
+      return 2;
+    }
+  }
+  return projtrack::bench::run(opt);
+}

@@ -1,0 +1,67 @@
+// Benchmark scenes: rendered camera-like frames of a shaded sphere or a five-finger hand, their
+// edges with deliberate miscalculations, and exact ground truth.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "edge_detection.hpp"
+#include "geometry.hpp"
+
+namespace projtrack::bench {
+
+enum class Object { Sphere, Hand };
+const char* object_name(Object o);
+
+struct SceneSpec {
+  int width = 640, height = 480;
+  Object object = Object::Sphere;
+  double gap_rate = 0;    // fraction of the contour's edge pixels removed, in runs of 1–3 px
+  bool spurious = false;  // spurious edge pixels and short segments inside the object
+  int instance = 0;       // varies the position and the random gaps, noise and specks
+};
+
+// A region of the object that seeds are drawn from (palm, each finger, thumb; or the sphere).
+struct Part {
+  std::string name;
+  cv::Mat mask;  // CV_8U, 255 inside the part, eroded so seeds are well inside
+};
+
+struct Scene {
+  SceneSpec spec;
+  cv::Mat image;  // CV_8U gray frame: shading, a low-contrast stretch, blur, sensor noise
+  cv::Mat mask;   // CV_8U, 255 on the object: pixel centres inside the analytic shape
+  cv::Mat edges;  // CV_8U edge map: Canny of `image`, then the deliberate gaps and specks
+  std::vector<Part> parts;
+
+  double true_area = 0;  // mask pixel count
+  Point2d true_centroid;
+  // Independent of the mask: a 4×4 supersampled count of the analytic shape, and for the
+  // sphere the closed form π r².
+  double supersampled_area = 0;
+  Point2d supersampled_centroid;
+  double analytic_area = 0;  // 0 when there is no closed form (the hand)
+
+  int contour_pixels = 0;      // object boundary length, px
+  int natural_gaps = 0;        // boundary pixels with no edge within 1 px before any deliberate gap
+  int gap_pixels_removed = 0;  // deliberate gaps
+  int spurious_pixels = 0;
+};
+
+Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params);
+
+// True when the mask's area and centroid agree with the independent counts (area within 1 %,
+// centroid within 0.25 px, and π r² within 0.5 % for the sphere); `why` says what disagrees.
+bool truth_is_consistent(const Scene& s, std::string* why);
+
+struct Seed {
+  Point2i p;
+  std::string part;
+};
+// About `total` seeds, drawn uniformly from every part in equal numbers (so each finger gets its
+// share, not just the palm).
+std::vector<Seed> sample_seeds(const Scene& s, int total, std::mt19937& rng);
+
+}  // namespace projtrack::bench
