@@ -86,7 +86,8 @@ std::vector<Contender> contenders(bool with_peers) {
 }
 
 const char* kRunColumns =
-    "resolution,width,height,object,gap_rate,spurious,instance,method,part,seed_x,seed_y,status,"
+    "resolution,width,height,object,scale,gap_rate,spurious,instance,method,part,seed_x,seed_y,"
+    "status,"
     "centroid_x,centroid_y,area,true_centroid_x,true_centroid_y,true_area,centroid_error_px,"
     "centroid_error_rel,area_error,leak,iterations,rays_cast,pixels_visited,time_us";
 
@@ -94,8 +95,8 @@ void write_run(std::ostream& o, const Scene& s, const std::string& method, const
                const Features& f, double us) {
   const SceneSpec& sp = s.spec;
   o << sp.width << 'x' << sp.height << ',' << sp.width << ',' << sp.height << ','
-    << object_name(sp.object) << ',' << sp.gap_rate << ',' << sp.spurious << ',' << sp.instance
-    << ',' << method << ',' << seed.part << ',' << seed.p.x << ',' << seed.p.y << ','
+    << object_name(sp.object) << ',' << sp.scale << ',' << sp.gap_rate << ',' << sp.spurious << ','
+    << sp.instance << ',' << method << ',' << seed.part << ',' << seed.p.x << ',' << seed.p.y << ','
     << status_name(f.status) << ',';
   if (f.valid()) {
     const double err = distance(f.centroid, s.true_centroid);
@@ -123,7 +124,7 @@ std::vector<SceneSpec> scene_specs(const Options& opt) {
     for (Object o : {Object::Sphere, Object::Hand})
       for (double r : rates)
         for (bool sp : spurious)
-          for (int i = 0; i < instances; ++i) specs.push_back({w, h, o, r, sp, i});
+          for (int i = 0; i < instances; ++i) specs.push_back({w, h, o, r, sp, i, 1.0});
   return specs;
 }
 
@@ -144,11 +145,11 @@ void run_scene(const Scene& s, const std::vector<Seed>& seeds, Contender& c, con
 void write_scene_row(std::ostream& o, const Scene& s, bool consistent) {
   const SceneSpec& sp = s.spec;
   o << sp.width << 'x' << sp.height << ',' << object_name(sp.object) << ',' << sp.gap_rate << ','
-    << sp.spurious << ',' << sp.instance << ',' << s.true_area << ',' << s.true_centroid.x << ','
-    << s.true_centroid.y << ',' << s.supersampled_area << ',' << s.supersampled_centroid.x << ','
-    << s.supersampled_centroid.y << ',' << s.analytic_area << ',' << s.contour_pixels << ','
-    << s.natural_gaps << ',' << s.gap_pixels_removed << ',' << s.spurious_pixels << ','
-    << cv::countNonZero(s.edges) << ',' << consistent << '\n';
+    << sp.spurious << ',' << sp.instance << ',' << sp.scale << ',' << s.true_area << ','
+    << s.true_centroid.x << ',' << s.true_centroid.y << ',' << s.supersampled_area << ','
+    << s.supersampled_centroid.x << ',' << s.supersampled_centroid.y << ',' << s.analytic_area
+    << ',' << s.contour_pixels << ',' << s.natural_gaps << ',' << s.gap_pixels_removed << ','
+    << s.spurious_pixels << ',' << cv::countNonZero(s.edges) << ',' << consistent << '\n';
 }
 
 // Edge detection and a frame copy (the floor of any per-frame work), per resolution.
@@ -177,7 +178,8 @@ void time_edges(const Options& opt, std::ostream& csv) {
 }
 
 // One parameter at a time, away from the defaults, on the 640×480 scenes.
-void sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progress& progress) {
+// Returns how many of its scenes failed the ground-truth check.
+int sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progress& progress) {
   struct Axis {
     std::string name;
     std::vector<double> values;
@@ -200,7 +202,7 @@ void sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progre
        [](Params& p, double v) { p.block_size = int(v); }},
       {"rays", {8, 16, 32, 64}, rays_methods, [](Params& p, double v) { p.rays = int(v); }},
       {"recursion",
-       {1, 2, 3},
+       {2, 3},
        {Method::RecursiveRayCasting, Method::RasterizedRayCasting},
        [](Params& p, double v) {
          p.recursion = int(v);
@@ -213,15 +215,18 @@ void sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progre
       {"convergence", {0.5, 1, 2, 4, 8}, iterative, [](Params& p, double v) { p.convergence = v; }},
   };
   if (opt.quick)
-    for (Axis& a : axes) a.values.resize(2);
+    for (Axis& a : axes) a.values.resize(std::min<std::size_t>(a.values.size(), 2));
   csv << "parameter,value," << kRunColumns << '\n';
   const std::vector<double> rates =
       opt.quick ? std::vector<double>{0.05} : std::vector<double>{0, 0.02, 0.05};
   std::vector<Scene> scenes;
   for (Object o : {Object::Sphere, Object::Hand})
-    for (double r : rates)
-      for (bool sp : {false, true})
-        scenes.push_back(make_scene({640, 480, o, r, sp, 0}, EdgeParams{}));
+    for (double scale : {1.0, 0.5})
+      for (double r : rates)
+        for (bool sp : {false, true})
+          scenes.push_back(make_scene({640, 480, o, r, sp, 0, scale}, EdgeParams{}));
+  int inconsistent = 0;
+  for (const Scene& s : scenes) inconsistent += !truth_is_consistent(s, nullptr);
   std::mt19937 rng(42);
   std::vector<std::vector<Seed>> seeds;
   for (const Scene& s : scenes) seeds.push_back(sample_seeds(s, opt.quick ? 4 : 12, rng));
@@ -245,6 +250,7 @@ void sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progre
       progress.advance("sweep " + a.name);
     }
   }
+  return inconsistent;
 }
 
 void figures(const Options& opt, const Params& p) {
@@ -317,7 +323,7 @@ int run(const Options& opt) {
   runs.precision(10);
   scenes.precision(10);
   runs << kRunColumns << '\n';
-  scenes << "resolution,object,gap_rate,spurious,instance,true_area,true_centroid_x,"
+  scenes << "resolution,object,gap_rate,spurious,instance,scale,true_area,true_centroid_x,"
             "true_centroid_y,supersampled_area,supersampled_centroid_x,supersampled_centroid_y,"
             "analytic_area,contour_pixels,natural_gaps,gap_pixels_removed,spurious_pixels,"
             "edge_pixels,truth_consistent\n";
@@ -344,7 +350,7 @@ int run(const Options& opt) {
   time_edges(opt, edges);
   std::ofstream sweep_csv(opt.out + "/sweep.csv");
   sweep_csv.precision(10);
-  sweep(opt, defaults, sweep_csv, progress);
+  inconsistent += sweep(opt, defaults, sweep_csv, progress);
   figures(opt, defaults);
   write_meta(opt, defaults, static_cast<int>(specs.size()), inconsistent);
   return inconsistent ? 1 : 0;

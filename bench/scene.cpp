@@ -101,10 +101,11 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
   const int w = spec.width, h = spec.height;
   const double s = h / 480.0;
   std::mt19937 rng(1000 * spec.instance + static_cast<int>(spec.object) * 7 +
-                   static_cast<int>(spec.gap_rate * 1000) + (spec.spurious ? 500 : 0) + w);
+                   static_cast<int>(spec.gap_rate * 1000) + (spec.spurious ? 500 : 0) + w +
+                   static_cast<int>(spec.scale * 100));
   std::uniform_real_distribution<double> jitter(-20 * s, 20 * s);
   const double cx = w / 2.0 + jitter(rng), cy = h / 2.0 + 10 * s + jitter(rng);
-  const Shape shape = make_shape(spec.object, cx, cy, s);
+  const Shape shape = make_shape(spec.object, cx, cy, s * spec.scale);
   const cv::Rect box = shape.bounds(w, h);
 
   // Exact mask and its truth; a supersampled count as the independent check.
@@ -153,13 +154,34 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
   const ImageView e = edge_map.detect(gray, edge_params);
   sc.edges = cv::Mat(h, w, CV_8U, const_cast<std::uint8_t*>(e.data), e.stride).clone();
 
-  // Boundary pixels (object pixels with a 4-neighbour outside) and the natural gaps along them.
-  cv::Mat eroded, near_edges;
-  cv::erode(sc.mask, eroded, cv::getStructuringElement(cv::MORPH_CROSS, {3, 3}));
-  const cv::Mat boundary = sc.mask - eroded;
-  sc.contour_pixels = cv::countNonZero(boundary);
-  cv::dilate(sc.edges, near_edges, cv::Mat::ones(3, 3, CV_8U));
-  sc.natural_gaps = cv::countNonZero(boundary & ~near_edges);
+  // Boundary pixels: object pixels with a 4-neighbour outside.
+  cv::Mat eroded;
+  const cv::Mat cross = cv::getStructuringElement(cv::MORPH_CROSS, {3, 3});
+  cv::erode(sc.mask, eroded, cross);
+  sc.contour_pixels = cv::countNonZero(sc.mask - eroded);
+
+  // Canny itself breaks the contour now and then (sharp concave corners, where non-maximum
+  // suppression thins two edges meeting at an angle). Close those breaks: fill from inside the
+  // object and, wherever the fill steps out, make that first outside pixel an edge. So the
+  // deliberate gaps below are the only miscalculations of the contour.
+  cv::Mat inner;
+  cv::erode(sc.mask, inner, cross, cv::Point(-1, -1), 2);
+  std::vector<cv::Point> starts;
+  cv::findNonZero(inner, starts);
+  cv::Mat work, filled, crossing, inside_filled;
+  for (int round = 0; round < 100 && !starts.empty(); ++round) {
+    sc.edges.copyTo(work);
+    for (std::size_t i = 0; i < starts.size(); i += std::max<std::size_t>(1, starts.size() / 16))
+      if (work.at<std::uint8_t>(starts[i]) == 0)
+        cv::floodFill(work, starts[i], 128, nullptr, 0, 0, 4);
+    filled = work == 128;
+    cv::dilate(filled & sc.mask, inside_filled, cross);
+    crossing = inside_filled & filled & ~sc.mask;
+    const int n = cv::countNonZero(crossing);
+    if (n == 0) break;
+    sc.edges.setTo(255, crossing);
+    sc.natural_gaps += n;
+  }
 
   // Deliberate gaps: remove 1–3 consecutive edge pixels of the object's contour line, at places
   // spread at random, until gap_rate of the contour is missing.

@@ -21,6 +21,7 @@ struct SceneSpec {
   double gap_rate = 0;    // fraction of the contour's edge pixels removed, in runs of 1–3 px
   bool spurious = false;  // spurious edge pixels and short segments inside the object
   int instance = 0;       // varies the position and the random gaps, noise and specks
+  double scale = 1.0;     // object size: 1 = about 160 px across at 480 lines; 0.5 = a far object
 };
 
 // A region of the object that seeds are drawn from (palm, each finger, thumb; or the sphere).
@@ -45,7 +46,7 @@ struct Scene {
   double analytic_area = 0;  // 0 when there is no closed form (the hand)
 
   int contour_pixels = 0;      // object boundary length, px
-  int natural_gaps = 0;        // boundary pixels with no edge within 1 px before any deliberate gap
+  int natural_gaps = 0;        // edge pixels added to close Canny's own breaks in the contour
   int gap_pixels_removed = 0;  // deliberate gaps
   int spurious_pixels = 0;
 };

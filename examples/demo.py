@@ -80,6 +80,7 @@ def main():
     ap.add_argument('--width', type=int, default=640)
     ap.add_argument('--height', type=int, default=480)
     ap.add_argument('--method', default='grid-filling')
+    ap.add_argument('--extra', default='', help='more projtrack properties, e.g. "grid-size=12"')
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
 
@@ -90,7 +91,7 @@ def main():
     pipeline = Gst.parse_launch(
         f'appsrc name=src is-live=false format=time '
         f'caps=video/x-raw,format=RGBx,width={args.width},height={args.height},framerate=30/1 ! '
-        f'videoconvert ! projtrack name=tracker draw=true method={args.method} '
+        f'videoconvert ! projtrack name=tracker draw=true method={args.method} {args.extra} '
         f'inner-point-x={int(cx)} inner-point-y={int(cy)} ! '
         f'videoconvert ! vp8enc deadline=1 cpu-used=8 ! webmmux ! filesink location={video}')
     src = pipeline.get_by_name('src')

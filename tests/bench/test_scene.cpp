@@ -36,7 +36,7 @@ TEST(BenchScene, ClosedContoursAreClosed) {
     for (Object o : {Object::Sphere, Object::Hand})
       for (int instance : {0, 1}) {
         const Scene s = make_scene({w, h, o, 0, false, instance}, EdgeParams{});
-        EXPECT_LE(s.natural_gaps, 0.005 * s.contour_pixels);
+        EXPECT_LE(s.natural_gaps, 0.01 * s.contour_pixels);
         const ImageView e(s.edges.data, w, h, static_cast<std::ptrdiff_t>(s.edges.step));
         std::mt19937 rng(9);
         for (const Seed& seed : sample_seeds(s, 12, rng)) {

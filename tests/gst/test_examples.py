@@ -29,11 +29,14 @@ def check_demo(script, out_dir):
     with open(os.path.join(out_dir, 'demo.csv')) as f:
         rows = list(csv.DictReader(f))
     assert len(rows) == 40, len(rows)
+    # Tracked on every frame with a sane estimate: the centroid within 6 % of the object's size
+    # (sqrt(area)) of the truth, the area within 20 %, at the element's defaults.
     for r in rows:
+        assert r['status'] == 'ok', r
         err = ((float(r['centroid_x']) - float(r['true_centroid_x'])) ** 2 +
                (float(r['centroid_y']) - float(r['true_centroid_y'])) ** 2) ** 0.5
-        assert err < 5, r
-        assert abs(float(r['area']) / float(r['true_area']) - 1) < 0.15, r
+        assert err < 0.06 * float(r['true_area']) ** 0.5, r
+        assert abs(float(r['area']) / float(r['true_area']) - 1) < 0.20, r
     assert os.path.getsize(os.path.join(out_dir, 'demo.webm')) > 10000
 
 
