@@ -104,7 +104,9 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
                    static_cast<int>(spec.gap_rate * 1000) + (spec.spurious ? 500 : 0) + w +
                    static_cast<int>(spec.scale * 100));
   std::uniform_real_distribution<double> jitter(-20 * s, 20 * s);
-  const double cx = w / 2.0 + jitter(rng), cy = h / 2.0 + 10 * s + jitter(rng);
+  const double jx = jitter(rng), jy = jitter(rng);
+  const double cx = spec.centre ? spec.centre->x : w / 2.0 + jx;
+  const double cy = spec.centre ? spec.centre->y : h / 2.0 + 10 * s + jy;
   const Shape shape = make_shape(spec.object, cx, cy, s * spec.scale);
   const cv::Rect box = shape.bounds(w, h);
 
@@ -124,10 +126,20 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
         }
     }
   }
+  if (spec.occluder) {
+    // What the camera sees of the object: the bar hides part of it.
+    const cv::Rect bar = *spec.occluder & cv::Rect(0, 0, w, h);
+    for (int y = bar.y; y < bar.br().y; ++y)
+      for (int x = bar.x; x < bar.br().x; ++x)
+        if (sc.mask.at<std::uint8_t>(y, x)) {
+          sc.mask.at<std::uint8_t>(y, x) = 0;
+          sum_x -= x, sum_y -= y, n -= 1;
+        }
+  }
   sc.true_area = n;
-  sc.true_centroid = {sum_x / n, sum_y / n};
+  sc.true_centroid = n > 0 ? Point2d{sum_x / n, sum_y / n} : Point2d{-1, -1};
   sc.supersampled_area = ss_n / 16.0;
-  sc.supersampled_centroid = {ss_x / ss_n, ss_y / ss_n};
+  sc.supersampled_centroid = ss_n > 0 ? Point2d{ss_x / ss_n, ss_y / ss_n} : Point2d{-1, -1};
   if (spec.object == Object::Sphere) {
     const double r = shape.primitives.front().x1;
     sc.analytic_area = M_PI * r * r;
@@ -142,6 +154,10 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
       row[x] = static_cast<float>(m[x] ? object_intensity(spec.object, shape, x, y, s)
                                        : background(spec.object, x, y, w, h, s));
   }
+  if (spec.distractor)
+    cv::circle(img, cv::Point(static_cast<int>(spec.distractor->x), static_cast<int>(spec.distractor->y)),
+               static_cast<int>(18 * s), cv::Scalar(215), cv::FILLED, cv::LINE_AA);
+  if (spec.occluder) cv::rectangle(img, *spec.occluder, cv::Scalar(128), cv::FILLED);
   cv::GaussianBlur(img, img, cv::Size(), 0.8);  // per pixel: a sharper sensor at higher resolution
   cv::Mat noise(h, w, CV_32F);
   cv::RNG cvrng(rng());
@@ -187,6 +203,7 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
   // spread at random, until gap_rate of the contour is missing.
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(sc.mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+  if (contours.empty()) return sc;  // the object is out of the frame
   const auto& contour =
       *std::max_element(contours.begin(), contours.end(),
                         [](const auto& a, const auto& b) { return a.size() < b.size(); });
@@ -269,6 +286,7 @@ bool truth_is_consistent(const Scene& s, std::string* why) {
 }
 
 std::vector<Seed> sample_seeds(const Scene& s, int total, std::mt19937& rng) {
+  if (s.parts.empty()) return {};
   const int per_part = std::max(1, total / static_cast<int>(s.parts.size()));
   std::vector<Seed> seeds;
   for (const Part& part : s.parts) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -22,6 +23,12 @@ struct SceneSpec {
   bool spurious = false;  // spurious edge pixels and short segments inside the object
   int instance = 0;       // varies the position and the random gaps, noise and specks
   double scale = 1.0;     // object size: 1 = about 160 px across at 480 lines; 0.5 = a far object
+  // For sequences (a moving object): where the object is (default: near the frame centre; it may
+  // be partly or wholly outside the frame), a grey bar in front of everything, and a second,
+  // smaller moving disc elsewhere.
+  std::optional<Point2d> centre;
+  std::optional<cv::Rect> occluder;
+  std::optional<Point2d> distractor;
 };
 
 // A region of the object that seeds are drawn from (palm, each finger, thumb; or the sphere).
@@ -37,8 +44,8 @@ struct Scene {
   cv::Mat edges;  // CV_8U edge map: Canny of `image`, then the deliberate gaps and specks
   std::vector<Part> parts;
 
-  double true_area = 0;  // mask pixel count
-  Point2d true_centroid;
+  double true_area = 0;  // mask pixel count (0 when the object is out of the frame)
+  Point2d true_centroid;  // (-1, -1) when the object is out of the frame
   // Independent of the mask: a 4×4 supersampled count of the analytic shape, and for the
   // sphere the closed form π r².
   double supersampled_area = 0;

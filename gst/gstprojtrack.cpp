@@ -56,10 +56,12 @@
 GST_DEBUG_CATEGORY_STATIC(gst_projtrack_debug);
 #define GST_CAT_DEFAULT gst_projtrack_debug
 
+using projtrack::Acquisition;
 using projtrack::EdgeDetector;
 using projtrack::Features;
 using projtrack::Method;
 using projtrack::Status;
+using projtrack::TrackResult;
 
 namespace {
 
@@ -72,6 +74,7 @@ struct Settings {
   Method method = kDefaultMethod;
   projtrack::Params params;
   projtrack::EdgeParams edges;
+  projtrack::TrackerParams tracker;
   bool draw = false;
   bool post_messages = true;
   int seed_x = -1, seed_y = -1;  // the last inner point given (property or click); -1 = none
@@ -88,6 +91,7 @@ struct Stream {
   std::vector<std::uint8_t> gray;  // packed RGB frames converted to gray
   int width = 0, height = 0;
   int black_level = 0;  // of edge-detector=input: 16 in limited-range YUV
+  guint64 frames = 0;   // for buffers without timestamps
   Status last_status = Status::NoInnerPoint;
 };
 
@@ -118,6 +122,12 @@ enum {
   PROP_INNER_POINT_Y,
   PROP_DRAW,
   PROP_POST_MESSAGES,
+  PROP_ACQUISITION,
+  PROP_LEAK_FACTOR,
+  PROP_SMOOTHING,
+  PROP_SMOOTHING_MIN_CUTOFF,
+  PROP_SMOOTHING_BETA,
+  PROP_PUSH_THRESHOLD,
   N_PROPERTIES
 };
 
@@ -165,6 +175,22 @@ GType gst_projtrack_edge_detector_get_type(void) {
       {0, nullptr, nullptr}};
   if (g_once_init_enter(&type)) {
     g_once_init_leave(&type, g_enum_register_static("GstProjtrackEdgeDetector", values));
+  }
+  return type;
+}
+
+GType gst_projtrack_acquisition_get_type(void) {
+  static GType type = 0;
+  static const GEnumValue values[] = {
+      {static_cast<gint>(Acquisition::Manual), "Manual: wait for an inner point or a click",
+       "manual"},
+      {static_cast<gint>(Acquisition::Center), "Center: track what is at the frame centre",
+       "center"},
+      {static_cast<gint>(Acquisition::Auto),
+       "Auto: the most compact closed region where the frame moves", "auto"},
+      {0, nullptr, nullptr}};
+  if (g_once_init_enter(&type)) {
+    g_once_init_leave(&type, g_enum_register_static("GstProjtrackAcquisition", values));
   }
   return type;
 }
@@ -227,6 +253,24 @@ static void gst_projtrack_set_property(GObject* object, guint prop_id, const GVa
     case PROP_POST_MESSAGES:
       s.post_messages = g_value_get_boolean(value);
       break;
+    case PROP_ACQUISITION:
+      s.tracker.acquisition = static_cast<Acquisition>(g_value_get_enum(value));
+      break;
+    case PROP_LEAK_FACTOR:
+      s.tracker.leak_factor = g_value_get_double(value);
+      break;
+    case PROP_SMOOTHING:
+      s.tracker.smoothing = g_value_get_boolean(value);
+      break;
+    case PROP_SMOOTHING_MIN_CUTOFF:
+      s.tracker.filter.min_cutoff = g_value_get_double(value);
+      break;
+    case PROP_SMOOTHING_BETA:
+      s.tracker.filter.beta = g_value_get_double(value);
+      break;
+    case PROP_PUSH_THRESHOLD:
+      s.tracker.push.threshold = g_value_get_double(value);
+      break;
     default:
       G_OBJECT_WARN_INVALID_PROPERTY_ID(object, prop_id, pspec);
       break;
@@ -284,6 +328,24 @@ static void gst_projtrack_get_property(GObject* object, guint prop_id, GValue* v
       break;
     case PROP_POST_MESSAGES:
       g_value_set_boolean(value, s.post_messages);
+      break;
+    case PROP_ACQUISITION:
+      g_value_set_enum(value, static_cast<gint>(s.tracker.acquisition));
+      break;
+    case PROP_LEAK_FACTOR:
+      g_value_set_double(value, s.tracker.leak_factor);
+      break;
+    case PROP_SMOOTHING:
+      g_value_set_boolean(value, s.tracker.smoothing);
+      break;
+    case PROP_SMOOTHING_MIN_CUTOFF:
+      g_value_set_double(value, s.tracker.filter.min_cutoff);
+      break;
+    case PROP_SMOOTHING_BETA:
+      g_value_set_double(value, s.tracker.filter.beta);
+      break;
+    case PROP_PUSH_THRESHOLD:
+      g_value_set_double(value, s.tracker.push.threshold);
       break;
     default:
       G_OBJECT_WARN_INVALID_PROPERTY_ID(object, prop_id, pspec);
@@ -371,46 +433,54 @@ static gboolean gst_projtrack_src_event(GstBaseTransform* trans, GstEvent* event
   return GST_BASE_TRANSFORM_CLASS(gst_projtrack_parent_class)->src_event(trans, event);
 }
 
-static GstStructure* features_structure(const char* name, const Features& f, Method method) {
-  return gst_structure_new(name, "status", G_TYPE_STRING,
-                           std::string(projtrack::status_name(f.status)).c_str(), "centroid-x",
-                           G_TYPE_DOUBLE, f.centroid.x, "centroid-y", G_TYPE_DOUBLE, f.centroid.y,
-                           "area", G_TYPE_DOUBLE, f.area, "inner-point-x", G_TYPE_INT,
-                           f.inner_point.x, "inner-point-y", G_TYPE_INT, f.inner_point.y, "method",
-                           G_TYPE_STRING, std::string(projtrack::method_name(method)).c_str(),
-                           "iterations", G_TYPE_INT, f.iterations, nullptr);
+// The features, the pose and the status: the ROI meta's parameters and the message's core.
+static GstStructure* result_structure(const TrackResult& r, Method method) {
+  GstStructure* s = gst_structure_new(
+      "projtrack", "status", G_TYPE_STRING, std::string(projtrack::status_name(r.status)).c_str(),
+      "method", G_TYPE_STRING, std::string(projtrack::method_name(method)).c_str(), nullptr);
+  const Features& f = r.features;
+  if (f.valid()) {  // when lost: the last accepted features
+    gst_structure_set(s, "centroid-x", G_TYPE_DOUBLE, f.centroid.x, "centroid-y", G_TYPE_DOUBLE,
+                      f.centroid.y, "area", G_TYPE_DOUBLE, f.area, "inner-point-x", G_TYPE_INT,
+                      f.inner_point.x, "inner-point-y", G_TYPE_INT, f.inner_point.y, "iterations",
+                      G_TYPE_INT, f.iterations, nullptr);
+  }
+  if (r.has_pose) {
+    gst_structure_set(s, "position-x", G_TYPE_DOUBLE, r.pose.x, "position-y", G_TYPE_DOUBLE,
+                      r.pose.y, "depth", G_TYPE_DOUBLE, r.pose.depth, nullptr);
+  }
+  if (r.push) gst_structure_set(s, "gesture", G_TYPE_STRING, "push", nullptr);
+  return s;
 }
 
-static void attach_meta(GstBuffer* buffer, const Features& f, Method method) {
-  GstVideoRegionOfInterestMeta* meta = gst_buffer_add_video_region_of_interest_meta(
-      buffer, "object", f.bbox.x, f.bbox.y, f.bbox.width, f.bbox.height);
-  gst_video_region_of_interest_meta_add_param(meta, features_structure("projtrack", f, method));
+static void attach_meta(GstBuffer* buffer, const TrackResult& r, Method method) {
+  const projtrack::Rect& b = r.features.bbox;
+  GstVideoRegionOfInterestMeta* meta =
+      gst_buffer_add_video_region_of_interest_meta(buffer, "object", b.x, b.y, b.width, b.height);
+  gst_video_region_of_interest_meta_add_param(meta, result_structure(r, method));
 }
 
-static GstMessage* features_message(GstProjtrack* self, GstBuffer* buffer, const Features& f,
-                                    Method method, const std::optional<projtrack::Point2i>& inner,
-                                    guint64 processing_ns) {
+static GstMessage* result_message(GstProjtrack* self, GstBuffer* buffer, const TrackResult& r,
+                                  Method method, const std::optional<projtrack::Point2i>& inner,
+                                  guint64 processing_ns) {
   const GstSegment* segment = &GST_BASE_TRANSFORM(self)->segment;
   const GstClockTime pts = GST_BUFFER_PTS(buffer);
   const GstClockTime stream_time = gst_segment_to_stream_time(segment, GST_FORMAT_TIME, pts);
   const GstClockTime running_time = gst_segment_to_running_time(segment, GST_FORMAT_TIME, pts);
-  GstStructure* s;
+  GstStructure* s = result_structure(r, method);
+  const Features& f = r.features;
   if (f.valid()) {
-    s = features_structure("projtrack", f, method);
     gst_structure_set(s, "x", G_TYPE_INT, f.bbox.x, "y", G_TYPE_INT, f.bbox.y, "width", G_TYPE_INT,
                       f.bbox.width, "height", G_TYPE_INT, f.bbox.height, "rays-cast", G_TYPE_UINT64,
                       static_cast<guint64>(f.rays_cast), "pixels-visited", G_TYPE_UINT64,
                       static_cast<guint64>(f.pixels_visited), nullptr);
-  } else {
-    s = gst_structure_new("projtrack", "status", G_TYPE_STRING,
-                          std::string(projtrack::status_name(f.status)).c_str(), "detail",
-                          G_TYPE_STRING, f.detail.c_str(), "method", G_TYPE_STRING,
-                          std::string(projtrack::method_name(method)).c_str(), nullptr);
-    if (inner) {
-      gst_structure_set(s, "inner-point-x", G_TYPE_INT, inner->x, "inner-point-y", G_TYPE_INT,
-                        inner->y, nullptr);
-    }
+  } else if (inner) {
+    gst_structure_set(s, "inner-point-x", G_TYPE_INT, inner->x, "inner-point-y", G_TYPE_INT,
+                      inner->y, nullptr);
   }
+  const std::string& detail = r.detail.empty() ? f.detail : r.detail;
+  if (!detail.empty()) gst_structure_set(s, "detail", G_TYPE_STRING, detail.c_str(), nullptr);
+  if (r.acquired) gst_structure_set(s, "acquired", G_TYPE_BOOLEAN, TRUE, nullptr);
   gst_structure_set(s, "timestamp", G_TYPE_UINT64, pts, "stream-time", G_TYPE_UINT64, stream_time,
                     "running-time", G_TYPE_UINT64, running_time, "duration", G_TYPE_UINT64,
                     GST_BUFFER_DURATION(buffer), "processing-time", G_TYPE_UINT64, processing_ns,
@@ -419,8 +489,8 @@ static GstMessage* features_message(GstProjtrack* self, GstBuffer* buffer, const
 }
 
 // Runs edges + estimator on one mapped frame, and draws when asked.
-static Features process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
-                        SeedCommand command) {
+static TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
+                           SeedCommand command) {
   Stream& st = *self->stream;
   if (command == SeedCommand::Seed)
     st.tracker.seed({s.seed_x, s.seed_y});
@@ -431,13 +501,18 @@ static Features process(GstProjtrack* self, GstVideoFrame* frame, const Settings
   const projtrack::ImageView gray = projtrack::gst::frame_gray(frame, st.gray);
   const projtrack::ImageView edges = st.edge_map.detect(gray, edge_params);
   projtrack::Trace* trace = s.draw ? &st.trace : nullptr;
-  Features f = st.tracker.track(edges, s.method, s.params, trace);
+  // Seconds for the smoothing and the push detector: the buffer's time, else 30 frames a second.
+  const GstClockTime pts = GST_BUFFER_PTS(frame->buffer);
+  const double t = GST_CLOCK_TIME_IS_VALID(pts) ? static_cast<double>(pts) / GST_SECOND
+                                                : static_cast<double>(st.frames) / 30.0;
+  ++st.frames;
+  TrackResult r = st.tracker.track(gray, edges, t, s.method, s.params, s.tracker, trace);
   if (s.draw) {
-    projtrack::gst::draw_overlay(frame, s.method, f, st.trace);
+    projtrack::gst::draw_overlay(frame, s.method, r.features, st.trace);
     if (st.trace.rays_not_recorded)
       GST_LOG_OBJECT(self, "overlay: %zu rays not recorded", st.trace.rays_not_recorded);
   }
-  return f;
+  return r;
 }
 
 // In place, as GstVideoFilter would, but the frame is mapped for writing only when the overlay
@@ -462,35 +537,37 @@ static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuff
     GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Could not map the video frame"), (nullptr));
     return GST_FLOW_ERROR;
   }
-  Features f;
+  TrackResult r;
   try {
-    f = process(self, &frame, s, command);
+    r = process(self, &frame, s, command);
   } catch (const std::exception& e) {  // e.g. std::bad_alloc: never unwind into GStreamer's C
     gst_video_frame_unmap(&frame);
     GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Tracking failed: %s", e.what()), (nullptr));
     return GST_FLOW_ERROR;
   }
   gst_video_frame_unmap(&frame);
-  if (f.valid()) attach_meta(buffer, f, s.method);
+  if (projtrack::has_features(r.status)) attach_meta(buffer, r, s.method);
 
   Stream& st = *self->stream;
-  if (f.status != st.last_status) {
-    if (f.status == Status::InvalidParameters)
-      GST_WARNING_OBJECT(self, "invalid parameters: %s", f.detail.c_str());
+  if (r.status != st.last_status) {
+    const std::string& detail = r.detail.empty() ? r.features.detail : r.detail;
+    if (r.status == Status::InvalidParameters)
+      GST_WARNING_OBJECT(self, "invalid parameters: %s", detail.c_str());
     else
       GST_INFO_OBJECT(self, "status %s -> %s%s%s",
                       std::string(projtrack::status_name(st.last_status)).c_str(),
-                      std::string(projtrack::status_name(f.status)).c_str(),
-                      f.detail.empty() ? "" : ": ", f.detail.c_str());
-    st.last_status = f.status;
+                      std::string(projtrack::status_name(r.status)).c_str(),
+                      detail.empty() ? "" : ": ", detail.c_str());
+    st.last_status = r.status;
   }
+  if (r.push) GST_INFO_OBJECT(self, "gesture: push");
 
   if (s.post_messages) {
     const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
                         std::chrono::steady_clock::now() - start)
                         .count();
-    GstMessage* msg = features_message(self, buffer, f, s.method, st.tracker.inner_point(),
-                                       static_cast<guint64>(ns));
+    GstMessage* msg = result_message(self, buffer, r, s.method, st.tracker.inner_point(),
+                                     static_cast<guint64>(ns));
     gst_element_post_message(GST_ELEMENT(self), msg);  // never under the object lock
   }
   return GST_FLOW_OK;
@@ -581,6 +658,31 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   properties[PROP_POST_MESSAGES] =
       g_param_spec_boolean("post-messages", "Post messages",
                            "Post a projtrack element message for every frame", TRUE, flags);
+  const projtrack::TrackerParams tp;
+  properties[PROP_ACQUISITION] = g_param_spec_enum(
+      "acquisition", "Acquisition",
+      "How tracking starts (and restarts after a loss) when no inner point is given",
+      GST_TYPE_PROJTRACK_ACQUISITION, static_cast<gint>(tp.acquisition), flags);
+  properties[PROP_LEAK_FACTOR] = g_param_spec_double(
+      "leak-factor", "Leak factor",
+      "An estimate whose area grows or shrinks by more than this factor from the last accepted "
+      "one is refused (status lost): a leak, or the inner point fell into a small region",
+      1.05, 1000.0, tp.leak_factor, flags);
+  properties[PROP_SMOOTHING] = g_param_spec_boolean(
+      "smoothing", "Smoothing", "Smooth position-x, position-y and depth (One Euro filter)",
+      tp.smoothing, flags);
+  properties[PROP_SMOOTHING_MIN_CUTOFF] = g_param_spec_double(
+      "smoothing-min-cutoff", "Smoothing minimum cutoff",
+      "One Euro filter: cutoff frequency at rest, Hz (lower = smoother, more lag)", 0.01, 100.0,
+      tp.filter.min_cutoff, flags);
+  properties[PROP_SMOOTHING_BETA] = g_param_spec_double(
+      "smoothing-beta", "Smoothing beta",
+      "One Euro filter: how fast the cutoff rises with speed (higher = less lag when moving)", 0.0,
+      1000.0, tp.filter.beta, flags);
+  properties[PROP_PUSH_THRESHOLD] = g_param_spec_double(
+      "push-threshold", "Push threshold",
+      "A push gesture is a quick rise of depth by more than this fraction, and back", 0.01, 10.0,
+      tp.push.threshold, flags);
   g_object_class_install_properties(gobject_class, N_PROPERTIES, properties);
 
   gst_element_class_set_static_metadata(
@@ -597,5 +699,6 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   trans_class->transform_ip = GST_DEBUG_FUNCPTR(gst_projtrack_transform_ip);
 
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_METHOD, static_cast<GstPluginAPIFlags>(0));
+  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_ACQUISITION, static_cast<GstPluginAPIFlags>(0));
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_EDGE_DETECTOR, static_cast<GstPluginAPIFlags>(0));
 }

@@ -47,7 +47,7 @@ Features Estimator::estimate(const ImageView& edges, Point2i inner_point, const 
   if (!seed) {
     const bool outside = !edges.contains(inner_point.x, inner_point.y);
     f.status = outside ? Status::InnerPointOutside : Status::InnerPointOnEdge;
-    f.detail = outside ? "no free pixel of the frame within the seed radius of the inner point"
+    f.detail = outside ? "the inner point lies outside the frame, beyond the seed radius"
                        : "the inner point and every pixel within the seed radius are edges";
     return f;
   }

@@ -10,6 +10,10 @@ std::string_view status_name(Status s) {
       return "reached-border";
     case Status::CoversFrame:
       return "covers-frame";
+    case Status::Lost:
+      return "lost";
+    case Status::Searching:
+      return "searching";
     case Status::NoInnerPoint:
       return "no-inner-point";
     case Status::InnerPointOutside:

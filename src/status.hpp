@@ -10,6 +10,9 @@ enum class Status {
   Ok,             // the estimate stayed inside the frame
   ReachedBorder,  // it touches the frame border: the object is cut by the frame, or it leaked
   CoversFrame,    // it touches all four borders: no closed contour around the inner point
+  // Without features of this frame (the tracker's verdicts):
+  Lost,       // the estimate was refused (leaked, collapsed, or none); the last good one is kept
+  Searching,  // automatic acquisition is looking for an object to track
   // Without features:
   NoInnerPoint,       // nothing to track yet: no inner point was given
   InnerPointOutside,  // the inner point is farther outside the frame than the seed radius

@@ -1,20 +1,211 @@
 #include "tracker.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 namespace projtrack {
 
-Features Tracker::track(const ImageView& edges, Method m, const Params& params, Trace* trace) {
-  if (trace) trace->clear();
-  if (!inner_) {
-    Features f;
-    f.status = Status::NoInnerPoint;
-    f.detail = "no inner point: set one, or click in the video";
-    return f;
+namespace {
+
+std::string percent(double fraction) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2g %%", 100 * fraction);
+  return buf;
+}
+
+double share_inside(const std::vector<Point2i>& points, const Rect& r) {
+  if (points.empty()) return 0;
+  std::size_t n = 0;
+  for (const Point2i& p : points)
+    n += p.x >= r.x && p.y >= r.y && p.x < r.right() && p.y < r.bottom();
+  return static_cast<double>(n) / points.size();
+}
+
+}  // namespace
+
+void Tracker::seed(Point2i p) {
+  reset();
+  inner_ = p;
+  seeded_by_user_ = true;
+}
+
+void Tracker::reset() {
+  inner_.reset();
+  last_good_.reset();
+  area0_ = 0;
+  refused_in_a_row_ = 0;
+  seeded_by_user_ = false;
+  push_.reset();
+  motion_.reset();
+}
+
+Estimator& Tracker::estimator(Method m) {
+  auto& e = estimators_[static_cast<int>(m)];
+  if (!e) e = make_estimator(m);
+  return *e;
+}
+
+std::string Tracker::implausible(const Features& f, const ImageView& edges,
+                                 const TrackerParams& tp) const {
+  if (!f.valid()) return f.detail.empty() ? std::string(status_name(f.status)) : f.detail;
+  const double frame = static_cast<double>(edges.width) * edges.height;
+  if (f.status == Status::CoversFrame)
+    return "the estimate covers the frame (a leak, or no closed contour around the inner point)";
+  if (f.area > tp.max_area * frame)
+    return "the estimate covers " + percent(f.area / frame) + " of the frame (a leak)";
+  if (f.area < tp.min_area * frame)
+    return "the estimate is too small (" + percent(f.area / frame) + " of the frame)";
+  return {};
+}
+
+std::string Tracker::refused(const Features& f, const ImageView& edges,
+                             const TrackerParams& tp) const {
+  std::string why = implausible(f, edges, tp);
+  if (!why.empty() || !last_good_) return why;
+  const double ratio = f.area / last_good_->area;
+  char buf[96];
+  if (ratio > tp.leak_factor) {
+    std::snprintf(buf, sizeof buf, "the area jumped %.1f× since the last frame (a leak)", ratio);
+    return buf;
   }
-  auto& estimator = estimators_[static_cast<int>(m)];
-  if (!estimator) estimator = make_estimator(m);
-  Features f = estimator->estimate(edges, *inner_, params, trace);
-  if (f.valid()) inner_ = f.inner_point;
-  return f;
+  if (ratio < 1 / tp.leak_factor) {
+    std::snprintf(buf, sizeof buf, "the area shrank to %.2f× of the last frame's", ratio);
+    return buf;
+  }
+  return {};
+}
+
+std::optional<Features> Tracker::acquire(const ImageView& gray, const ImageView& edges, Method m,
+                                         const Params& params, const TrackerParams& tp,
+                                         std::string& why) {
+  Estimator& est = estimator(m);
+  if (tp.acquisition == Acquisition::Manual) {
+    why = "no inner point: set one, or click in the video";
+    return std::nullopt;
+  }
+  if (tp.acquisition == Acquisition::Center) {
+    Features f = est.estimate(edges, {edges.width / 2, edges.height / 2}, params);
+    why = implausible(f, edges, tp);
+    if (why.empty()) return f;
+    why = "at the frame centre: " + why;
+    return std::nullopt;
+  }
+  if (!motion_.update(gray, tp.motion, moved_)) {
+    why = "waiting for a second frame to compare";
+    return std::nullopt;
+  }
+  if (moved_.fraction < tp.min_motion) {
+    why = "waiting for motion (" + percent(moved_.fraction) + " of the frame changed)";
+    return std::nullopt;
+  }
+  std::vector<Point2i> candidates{round_to_pixel(moved_.centroid)};
+  if (tp.strategy == AutoAcquisition::CompactMovingRegion) {
+    const std::size_t n = moved_.points.size(), k = std::max(1, tp.candidates);
+    for (std::size_t i = 0; i < k && i < n; ++i) candidates.push_back(moved_.points[i * n / k]);
+  }
+  std::optional<Features> best;
+  double best_score = -1;
+  for (const Point2i& c : candidates) {
+    if (best && c.x >= best->bbox.x && c.y >= best->bbox.y && c.x < best->bbox.right() &&
+        c.y < best->bbox.bottom())
+      continue;  // already inside the best region found
+    Features f = est.estimate(edges, c, params);
+    if (!implausible(f, edges, tp).empty()) continue;
+    if (tp.strategy == AutoAcquisition::MotionCentroid) return f;
+    // Moving (holds changed pixels) and compact (fills its box), unlike a background region.
+    const double box = static_cast<double>(f.bbox.width) * f.bbox.height;
+    const double score = share_inside(moved_.points, f.bbox) * f.area / box;
+    if (score > best_score) {
+      best_score = score;
+      best = std::move(f);
+    }
+  }
+  if (!best)
+    why = "no closed region where the frame moved (" + std::to_string(candidates.size()) +
+          " seeds tried)";
+  return best;
+}
+
+void Tracker::accept(const Features& f, double t, const ImageView& edges, const TrackerParams& tp,
+                     TrackResult& r) {
+  if (!last_good_) {  // a new track: depth 1 here, fresh filters
+    area0_ = f.area;
+    fx_.reset();
+    fy_.reset();
+    fdepth_.reset();
+    push_.reset();
+    r.acquired = true;
+  }
+  inner_ = f.inner_point;
+  last_good_ = f;
+  refused_in_a_row_ = 0;
+  raw_pose_ = {2 * (f.centroid.x + 0.5) / edges.width - 1,
+               2 * (f.centroid.y + 0.5) / edges.height - 1, std::sqrt(f.area / area0_)};
+  if (tp.smoothing) {
+    fx_.set_params(tp.filter);
+    fy_.set_params(tp.filter);
+    fdepth_.set_params(tp.filter);
+    pose_ = {fx_.filter(raw_pose_.x, t), fy_.filter(raw_pose_.y, t),
+             fdepth_.filter(raw_pose_.depth, t)};
+  } else {
+    pose_ = raw_pose_;
+  }
+  push_.set_params(tp.push);
+  r.push = push_.update(raw_pose_.depth, t);
+  r.status = f.status;
+  r.features = f;
+  r.has_pose = true;
+  r.pose = pose_;
+  r.raw_pose = raw_pose_;
+}
+
+TrackResult Tracker::track(const ImageView& gray, const ImageView& edges, double t, Method m,
+                           const Params& params, const TrackerParams& tp, Trace* trace) {
+  if (trace) trace->clear();
+  TrackResult r;
+  if (!edges.valid()) {
+    r.status = edges.empty() ? Status::EmptyImage : Status::InvalidImage;
+    r.detail = "no usable frame";
+    return r;
+  }
+  if (!inner_) {
+    std::optional<Features> f = acquire(gray, edges, m, params, tp, r.detail);
+    if (!f) {
+      r.status = tp.acquisition == Acquisition::Manual ? Status::NoInnerPoint : Status::Searching;
+      return r;
+    }
+    r.detail.clear();
+    accept(*f, t, edges, tp, r);
+    return r;
+  }
+
+  const Features f = estimator(m).estimate(edges, *inner_, params, trace);
+  if (f.status == Status::InvalidParameters || f.status == Status::InvalidImage ||
+      f.status == Status::EmptyImage) {
+    r.status = f.status;  // not the object's doing: say what is wrong, keep the track
+    r.features = f;
+    return r;
+  }
+  std::string why = refused(f, edges, tp);
+  if (why.empty()) {
+    accept(f, t, edges, tp, r);
+    return r;
+  }
+  // Refused: report the last good features and keep the inner point; the object may come back
+  // under it (a brief occlusion). After `patience` frames, drop the track.
+  ++refused_in_a_row_;
+  r.status = Status::Lost;
+  r.detail = why;
+  r.features = last_good_ ? *last_good_ : f;
+  r.has_pose = last_good_.has_value();
+  r.pose = pose_;
+  r.raw_pose = raw_pose_;
+  push_.reset();
+  if (refused_in_a_row_ > tp.patience) {
+    r.detail += "; the track is dropped";
+    reset();
+  }
+  return r;
 }
 
 }  // namespace projtrack

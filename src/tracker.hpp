@@ -1,29 +1,104 @@
-// Follows one object from frame to frame: the inner point between frames, one estimator per method.
+// Follows one object from frame to frame: finds it, keeps its inner point, notices when it is
+// lost, finds it again, and turns its features into a 3D pointer (x, y, depth) with push clicks.
 #pragma once
 
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "estimator.hpp"
+#include "motion_detector.hpp"
+#include "one_euro_filter.hpp"
+#include "push_detector.hpp"
 
 namespace projtrack {
 
+// How tracking starts when there is no object.
+enum class Acquisition {
+  Manual,  // wait for an inner point (a property or a click)
+  Center,  // try the frame centre
+  Auto,    // the most relevant object: see AutoAcquisition
+};
+
+// How Acquisition::Auto picks the object (compared in docs/benchmarks.md).
+enum class AutoAcquisition {
+  MotionCentroid,       // the original system's: the centroid of the changed pixels
+  CompactMovingRegion,  // the changed pixels as candidate seeds; the most compact moving fill
+};
+
+struct TrackerParams {
+  Acquisition acquisition = Acquisition::Auto;
+  AutoAcquisition strategy = AutoAcquisition::CompactMovingRegion;
+  MotionDetector::Params motion{25, 4};
+  double min_motion = 0.002;  // share of the frame that must change before Auto looks
+  int candidates = 12;        // seeds CompactMovingRegion tries per frame
+
+  // An estimate is refused (status Lost) when its area leaves [1/leak_factor, leak_factor] × the
+  // last accepted one (a leak, or the inner point fell into a small region), exceeds
+  // max_area × the frame, falls under min_area × the frame, or has no features at all.
+  double leak_factor = 2.0;
+  double max_area = 0.5;
+  double min_area = 0.0005;
+  int patience = 5;  // refused frames in a row before the track is dropped (and Auto searches)
+
+  bool smoothing = true;  // One Euro filter on x, y and depth
+  OneEuroFilter::Params filter;
+  PushDetector::Params push;
+};
+
+// The 3D pointer: x, y in [-1, 1] from the centroid (0 at the frame centre, +1 at the right and
+// bottom edges); depth 1 at acquisition, then sqrt(area / area at acquisition): it rises as the
+// object nears the camera.
+struct Pose {
+  double x = 0, y = 0, depth = 1;
+};
+
+struct TrackResult {
+  Status status = Status::NoInnerPoint;
+  Features features;      // this frame's estimate; when Lost, the last accepted one (if any)
+  std::string detail;     // why, when the status is Lost, Searching or without features
+  bool acquired = false;  // tracking (re)started on this frame
+  bool has_pose = false;  // tracking or lost (held) with an acquired object
+  Pose pose;              // smoothed (when TrackerParams::smoothing)
+  Pose raw_pose;
+  bool push = false;  // a push completed on this frame
+};
+
 class Tracker {
  public:
-  // Starts (or restarts) tracking from `p`.
-  void seed(Point2i p) { inner_ = p; }
-  // Forgets the object: the next track() reports Status::NoInnerPoint until seeded.
-  void reset() { inner_.reset(); }
+  // Tracks from `p` on the next frame, whatever the acquisition mode.
+  void seed(Point2i p);
+  // Forgets the object; Auto and Center acquisition start over.
+  void reset();
   const std::optional<Point2i>& inner_point() const { return inner_; }
 
-  // Estimates the features around the current inner point with method `m`; when they are valid,
-  // the inner point moves to the estimate's updated one for the next frame (otherwise it stays).
-  Features track(const ImageView& edges, Method m, const Params& params, Trace* trace = nullptr);
+  // One frame: `gray` (for motion) and its `edges`, taken at `t` seconds.
+  TrackResult track(const ImageView& gray, const ImageView& edges, double t, Method m,
+                    const Params& params, const TrackerParams& tp, Trace* trace = nullptr);
 
  private:
+  Estimator& estimator(Method m);
+  // Empty when `f` is acceptable as a new track's first estimate; otherwise why not.
+  std::string implausible(const Features& f, const ImageView& edges, const TrackerParams& tp) const;
+  // Empty when `f` continues the track; otherwise why it is refused.
+  std::string refused(const Features& f, const ImageView& edges, const TrackerParams& tp) const;
+  std::optional<Features> acquire(const ImageView& gray, const ImageView& edges, Method m,
+                                  const Params& params, const TrackerParams& tp, std::string& why);
+  void accept(const Features& f, double t, const ImageView& edges, const TrackerParams& tp,
+              TrackResult& r);
+
   std::array<std::unique_ptr<Estimator>, kMethodCount> estimators_;  // made on first use
   std::optional<Point2i> inner_;
+  std::optional<Features> last_good_;
+  double area0_ = 0;
+  int refused_in_a_row_ = 0;
+  bool seeded_by_user_ = false;
+  Pose pose_, raw_pose_;
+  OneEuroFilter fx_, fy_, fdepth_;
+  PushDetector push_;
+  MotionDetector motion_;
+  MotionDetector::Motion moved_;
 };
 
 }  // namespace projtrack

@@ -50,7 +50,7 @@ TEST(Status, NamesAreDistinctAndFeaturesOnlyWhereComputed) {
   std::set<std::string_view> names;
   for (int s = 0; s <= static_cast<int>(Status::InvalidParameters); ++s)
     names.insert(status_name(static_cast<Status>(s)));
-  EXPECT_EQ(names.size(), 9u);
+  EXPECT_EQ(names.size(), 11u);
   EXPECT_TRUE(has_features(Status::ReachedBorder));
   EXPECT_FALSE(has_features(Status::InnerPointOnEdge));
 }

@@ -1,50 +1,143 @@
-// The tracker: the inner point from frame to frame.
+// The tracker, frame by frame: acquisition, the inner point, refusals, the pose.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <opencv2/imgproc.hpp>
 #include <vector>
 
 #include "scenes.hpp"
+#include "edge_detection.hpp"
 #include "tracker.hpp"
 
 namespace projtrack {
 namespace {
 
-TEST(Tracker, WaitsForAnInnerPoint) {
-  const test::Scene disc = test::disc_scene();
-  Tracker t;
-  const Features f = t.track(disc.edge_view(), Method::GridFilling, {});
-  EXPECT_EQ(f.status, Status::NoInnerPoint);
-  EXPECT_FALSE(f.detail.empty());
-  EXPECT_FALSE(t.inner_point().has_value());
+// A bright disc on a dark frame, as gray and as Canny edges.
+struct Frame {
+  cv::Mat gray, edges;
+  ImageView g() const { return ImageView(gray.data, gray.cols, gray.rows, gray.step); }
+  ImageView e() const { return ImageView(edges.data, edges.cols, edges.rows, edges.step); }
+};
+
+Frame disc_frame(int cx, int cy, int r, int w = 320, int h = 240) {
+  Frame f;
+  f.gray = cv::Mat(h, w, CV_8U, cv::Scalar(40));
+  cv::circle(f.gray, {cx, cy}, r, cv::Scalar(210), cv::FILLED, cv::LINE_AA);
+  EdgeMap map;
+  const ImageView e = map.detect(f.g(), {});
+  f.edges = cv::Mat(h, w, CV_8U, const_cast<std::uint8_t*>(e.data), e.stride).clone();
+  return f;
 }
 
-TEST(Tracker, FollowsTheInnerPointAcrossFramesWithEveryMethod) {
-  const test::Scene disc = test::disc_scene();
+TrackerParams manual() {
+  TrackerParams tp;
+  tp.acquisition = Acquisition::Manual;
+  return tp;
+}
+
+TEST(Tracker, ManualWaitsForAnInnerPoint) {
+  const Frame f = disc_frame(160, 120, 40);
+  Tracker t;
+  const TrackResult r = t.track(f.g(), f.e(), 0, Method::GridFilling, {}, manual());
+  EXPECT_EQ(r.status, Status::NoInnerPoint);
+  EXPECT_FALSE(r.detail.empty());
+  EXPECT_FALSE(r.has_pose);
+}
+
+TEST(Tracker, FollowsTheInnerPointWithEveryMethodAndReportsThePose) {
+  const Frame f = disc_frame(200, 100, 40);
   for (Method m : kAllMethods) {
     Tracker t;
-    t.seed({75, 80});
-    const Features first = t.track(disc.edge_view(), m, {});
-    ASSERT_TRUE(first.valid()) << method_name(m);
-    ASSERT_TRUE(t.inner_point().has_value());
-    EXPECT_EQ(*t.inner_point(), first.inner_point);
-    // The next frame starts where the last one left the inner point.
-    const Features second = t.track(disc.edge_view(), m, {});
-    EXPECT_EQ(second.seed, first.inner_point) << method_name(m);
+    t.seed({190, 110});
+    const TrackResult first = t.track(f.g(), f.e(), 0, m, {}, manual());
+    ASSERT_TRUE(first.features.valid()) << method_name(m);
+    EXPECT_TRUE(first.acquired);
+    EXPECT_EQ(*t.inner_point(), first.features.inner_point);
+    EXPECT_DOUBLE_EQ(first.raw_pose.depth, 1.0);
+    EXPECT_NEAR(first.raw_pose.x, 2 * (first.features.centroid.x + 0.5) / 320 - 1, 1e-12);
+    EXPECT_NEAR(first.raw_pose.y, 2 * (first.features.centroid.y + 0.5) / 240 - 1, 1e-12);
+    const TrackResult second = t.track(f.g(), f.e(), 1.0 / 30, m, {}, manual());
+    EXPECT_EQ(second.features.seed, first.features.inner_point) << method_name(m);
+    EXPECT_FALSE(second.acquired);
   }
 }
 
-TEST(Tracker, KeepsTheInnerPointWhenAnEstimateFails) {
-  const test::Scene disc = test::disc_scene();
-  const std::vector<std::uint8_t> all_edges(200 * 180, 255);
+TEST(Tracker, DepthFollowsTheSquareRootOfTheArea) {
+  TrackerParams tp = manual();
+  tp.smoothing = false;
   Tracker t;
-  t.seed({100, 90});
-  EXPECT_EQ(t.track(ImageView(all_edges.data(), 200, 180, 200), Method::PixelFilling, {}).status,
-            Status::InnerPointOnEdge);
-  ASSERT_TRUE(t.inner_point().has_value());
-  EXPECT_EQ(*t.inner_point(), (Point2i{100, 90}));
-  EXPECT_TRUE(t.track(disc.edge_view(), Method::PixelFilling, {}).valid());
-  t.reset();
-  EXPECT_EQ(t.track(disc.edge_view(), Method::PixelFilling, {}).status, Status::NoInnerPoint);
+  t.seed({160, 120});
+  t.track(disc_frame(160, 120, 30).g(), disc_frame(160, 120, 30).e(), 0, Method::PixelFilling, {},
+          tp);
+  const Frame bigger = disc_frame(160, 120, 39);
+  const TrackResult r = t.track(bigger.g(), bigger.e(), 0.033, Method::PixelFilling, {}, tp);
+  ASSERT_EQ(r.status, Status::Ok);
+  EXPECT_NEAR(r.pose.depth, 39.0 / 30.0, 0.03);  // depth ∝ √area ∝ radius
+  EXPECT_EQ(r.pose.depth, r.raw_pose.depth);     // smoothing off
+}
+
+TEST(Tracker, RefusesALeakReportsTheLastGoodFeaturesThenDropsTheTrack) {
+  const Frame closed = disc_frame(160, 120, 40);
+  Frame open{closed.gray.clone(), closed.edges.clone()};
+  // Cut the contour: a 3 px wide vertical gap through the disc's edge on the right.
+  open.edges(cv::Rect(195, 110, 10, 3)).setTo(0);
+  TrackerParams tp = manual();
+  tp.patience = 2;
+  Tracker t;
+  t.seed({160, 120});
+  const TrackResult good = t.track(closed.g(), closed.e(), 0, Method::PixelFilling, {}, tp);
+  ASSERT_EQ(good.status, Status::Ok) << good.detail;
+  for (int i = 1; i <= 3; ++i) {
+    const TrackResult r = t.track(open.g(), open.e(), i / 30.0, Method::PixelFilling, {}, tp);
+    ASSERT_EQ(r.status, Status::Lost) << i;
+    EXPECT_NE(r.detail.find("leak"), std::string::npos) << r.detail;
+    EXPECT_EQ(r.features.area, good.features.area);  // the last good features
+    EXPECT_TRUE(r.has_pose);
+  }
+  // Past the patience the track is dropped: manual acquisition waits again.
+  EXPECT_FALSE(t.inner_point().has_value());
+  EXPECT_EQ(t.track(closed.g(), closed.e(), 0.2, Method::PixelFilling, {}, tp).status,
+            Status::NoInnerPoint);
+}
+
+TEST(Tracker, AUserSeedOnTheBackgroundIsRefused) {
+  const Frame f = disc_frame(160, 120, 40);
+  Tracker t;
+  t.seed({10, 10});
+  const TrackResult r = t.track(f.g(), f.e(), 0, Method::GridFilling, {}, manual());
+  EXPECT_EQ(r.status, Status::Lost);
+  EXPECT_NE(r.detail.find("covers"), std::string::npos) << r.detail;
+}
+
+TEST(Tracker, CenterAcquisitionTakesWhatIsAtTheCentre) {
+  TrackerParams tp;
+  tp.acquisition = Acquisition::Center;
+  Tracker t;
+  const Frame off = disc_frame(60, 60, 30);
+  EXPECT_EQ(t.track(off.g(), off.e(), 0, Method::GridFilling, {}, tp).status, Status::Searching);
+  const Frame centred = disc_frame(165, 115, 40);
+  const TrackResult r = t.track(centred.g(), centred.e(), 0.033, Method::GridFilling, {}, tp);
+  EXPECT_EQ(r.status, Status::Ok);
+  EXPECT_TRUE(r.acquired);
+  EXPECT_NEAR(r.features.centroid.x, 165, 2);
+}
+
+TEST(Tracker, AutoAcquisitionFindsTheMovingObject) {
+  for (AutoAcquisition strategy :
+       {AutoAcquisition::MotionCentroid, AutoAcquisition::CompactMovingRegion}) {
+    TrackerParams tp;
+    tp.strategy = strategy;
+    Tracker t;
+    const Frame a = disc_frame(100, 120, 35), b = disc_frame(112, 120, 35);
+    EXPECT_EQ(t.track(a.g(), a.e(), 0, Method::GridFilling, {}, tp).status, Status::Searching);
+    EXPECT_EQ(t.track(a.g(), a.e(), 0.033, Method::GridFilling, {}, tp).status, Status::Searching)
+        << "nothing moved";
+    const TrackResult r = t.track(b.g(), b.e(), 0.067, Method::GridFilling, {}, tp);
+    ASSERT_EQ(r.status, Status::Ok);
+    EXPECT_TRUE(r.acquired);
+    EXPECT_NEAR(r.features.centroid.x, 112, 2);
+    EXPECT_NEAR(r.features.centroid.y, 120, 2);
+  }
 }
 
 }  // namespace

@@ -1,0 +1,39 @@
+#include "motion_detector.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace projtrack {
+
+bool MotionDetector::update(const ImageView& gray, const Params& p, Motion& out) {
+  out.fraction = 0;
+  out.points.clear();
+  if (!gray.valid()) return false;
+  const int step = std::max(1, p.step);
+  const int cols = (gray.width + step - 1) / step, rows = (gray.height + step - 1) / step;
+  const bool comparable = gray.width == width_ && gray.height == height_ && step == step_;
+  previous_.resize(static_cast<std::size_t>(cols) * rows);
+  double sx = 0, sy = 0;
+  for (int r = 0; r < rows; ++r) {
+    const std::uint8_t* row = gray.row(r * step);
+    std::uint8_t* prev = previous_.data() + static_cast<std::size_t>(r) * cols;
+    for (int c = 0; c < cols; ++c) {
+      const std::uint8_t v = row[c * step];
+      if (comparable && std::abs(v - prev[c]) > p.threshold) {
+        out.points.push_back({c * step, r * step});
+        sx += c * step;
+        sy += r * step;
+      }
+      prev[c] = v;
+    }
+  }
+  width_ = gray.width;
+  height_ = gray.height;
+  step_ = step;
+  if (!comparable) return false;
+  out.fraction = static_cast<double>(out.points.size()) / (static_cast<double>(cols) * rows);
+  if (!out.points.empty()) out.centroid = {sx / out.points.size(), sy / out.points.size()};
+  return true;
+}
+
+}  // namespace projtrack

@@ -1,0 +1,35 @@
+// Frame differencing: where the picture changed since the previous frame. The original system
+// picked the object to track this way: once enough of the frame moves, the moving region is it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry.hpp"
+#include "image_view.hpp"
+
+namespace projtrack {
+
+class MotionDetector {
+ public:
+  struct Params {
+    int threshold = 25;  // grey levels of change that count as motion
+    int step = 2;        // compare every step-th pixel of every step-th row
+  };
+  struct Motion {
+    double fraction = 0;          // of the sampled pixels that changed
+    Point2d centroid;             // of the changed samples (valid when fraction > 0)
+    std::vector<Point2i> points;  // the changed samples, in frame coordinates
+  };
+
+  // Compares `gray` with the previous frame and keeps it for the next call. Returns false (and
+  // no motion) on the first frame, after reset() or when the frame size changed.
+  bool update(const ImageView& gray, const Params& p, Motion& out);
+  void reset() { width_ = height_ = 0; }
+
+ private:
+  std::vector<std::uint8_t> previous_;  // the sampled previous frame
+  int width_ = 0, height_ = 0, step_ = 0;
+};
+
+}  // namespace projtrack
