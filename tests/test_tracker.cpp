@@ -5,8 +5,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "scenes.hpp"
 #include "edge_detection.hpp"
+#include "scenes.hpp"
 #include "tracker.hpp"
 
 namespace projtrack {
