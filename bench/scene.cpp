@@ -155,8 +155,9 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
                                        : background(spec.object, x, y, w, h, s));
   }
   if (spec.distractor)
-    cv::circle(img, cv::Point(static_cast<int>(spec.distractor->x), static_cast<int>(spec.distractor->y)),
-               static_cast<int>(18 * s), cv::Scalar(215), cv::FILLED, cv::LINE_AA);
+    cv::circle(
+        img, cv::Point(static_cast<int>(spec.distractor->x), static_cast<int>(spec.distractor->y)),
+        static_cast<int>(18 * s), cv::Scalar(215), cv::FILLED, cv::LINE_AA);
   if (spec.occluder) cv::rectangle(img, *spec.occluder, cv::Scalar(128), cv::FILLED);
   cv::GaussianBlur(img, img, cv::Size(), 0.8);  // per pixel: a sharper sensor at higher resolution
   cv::Mat noise(h, w, CV_32F);

@@ -44,7 +44,7 @@ struct Scene {
   cv::Mat edges;  // CV_8U edge map: Canny of `image`, then the deliberate gaps and specks
   std::vector<Part> parts;
 
-  double true_area = 0;  // mask pixel count (0 when the object is out of the frame)
+  double true_area = 0;   // mask pixel count (0 when the object is out of the frame)
   Point2d true_centroid;  // (-1, -1) when the object is out of the frame
   // Independent of the mask: a 4×4 supersampled count of the analytic shape, and for the
   // sphere the closed form π r².

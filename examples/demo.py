@@ -30,14 +30,20 @@ class HandScene:
 
     PERIOD = 300  # frames for one loop of the path (10 s at 30 fps), whatever the length
 
-    def __init__(self, width, height):
+    def __init__(self, width, height, path=None):
+        """path(i) -> (x, y, size) overrides the default Lissajous loop: x, y as fractions of
+        the frame, size 1 for a hand about 200 px tall at 480 lines."""
         self.w, self.h = width, height
+        self.path = path
         self.yy, self.xx = np.mgrid[0:height, 0:width].astype(np.float32)
         shade = 40 + 50 * self.yy / height + 12 * np.sin(self.xx / 23.0)
         self.background = np.stack([shade * 0.8, shade * 0.9, shade * 1.2], axis=-1)
         self.rng = np.random.default_rng(7)
 
     def pose(self, i):
+        if self.path:
+            fx, fy, size = self.path(i)
+            return fx * self.w, fy * self.h, self.h / 480 * size
         t = i / self.PERIOD * 2 * math.pi
         scale = self.h / 480 * (1.0 + 0.25 * math.sin(2 * t))  # toward and away from the camera
         cx = self.w / 2 + 0.28 * self.w * math.sin(t)

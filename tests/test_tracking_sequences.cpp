@@ -7,63 +7,26 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
+#include "sequence.hpp"
 #include "tracker.hpp"
 
 namespace projtrack {
 namespace {
 
 using bench::Object;
-using bench::Scene;
 using bench::SceneSpec;
+using Step = bench::SequenceStep;
 
 constexpr double kFps = 30;
 
-struct Step {
-  Scene scene;
-  TrackResult result;
-  bool visible;  // at least half of the object is in the frame
-  bool sane;     // tracking, with the centroid within 10 % of √area and the area within 35 %
-};
-
-// Runs the tracker over frames spec(0..n-1); `seed` is used once, on the first frame.
-std::vector<Step> run(int n, const std::function<SceneSpec(int)>& spec, const TrackerParams& tp,
-                      std::optional<Point2i> seed = std::nullopt, Method m = Method::GridFilling) {
-  Tracker tracker;
-  if (seed) tracker.seed(*seed);
-  std::vector<Step> steps;
-  const Scene whole = bench::make_scene(spec(0), EdgeParams{});
-  for (int i = 0; i < n; ++i) {
-    Step s{bench::make_scene(spec(i), EdgeParams{}), {}, false, false};
-    const ImageView gray(s.scene.image.data, s.scene.image.cols, s.scene.image.rows,
-                         s.scene.image.step);
-    const ImageView edges(s.scene.edges.data, s.scene.edges.cols, s.scene.edges.rows,
-                          s.scene.edges.step);
-    s.result = tracker.track(gray, edges, i / kFps, m, Params{}, tp);
-    s.visible = s.scene.true_area > 0.5 * whole.true_area;
-    const Features& f = s.result.features;
-    s.sane = has_features(s.result.status) && s.scene.true_area > 0 &&
-             distance(f.centroid, s.scene.true_centroid) < 0.1 * std::sqrt(s.scene.true_area) &&
-             std::abs(f.area / s.scene.true_area - 1) < 0.35;
-    steps.push_back(std::move(s));
-  }
-  return steps;
-}
-
-SceneSpec at(Object o, double x, double y, int frame, double scale = 1.0) {
-  SceneSpec s;
-  s.object = o;
-  s.centre = Point2d{x, y};
-  s.instance = frame;  // fresh sensor noise every frame
-  s.scale = scale;
-  return s;
-}
+using bench::frame_at;
+using bench::run_sequence;
 
 TEST(TrackingSequences, AMovingHandIsAcquiredAndKeptOnEveryFrame) {
   const auto spec = [](int i) {
-    return at(Object::Hand, 200 + 4.0 * i, 250 + 20 * std::sin(i / 8.0), i);
+    return frame_at(Object::Hand, 200 + 4.0 * i, 250 + 20 * std::sin(i / 8.0), i);
   };
-  const auto steps = run(60, spec, TrackerParams{});
+  const auto steps = run_sequence(60, spec, TrackerParams{});
   int acquired_at = -1;
   for (int i = 0; i < 60; ++i)
     if (steps[i].result.acquired && acquired_at < 0) acquired_at = i;
@@ -77,10 +40,10 @@ TEST(TrackingSequences, AMovingHandIsAcquiredAndKeptOnEveryFrame) {
 TEST(TrackingSequences, DepthRisesAsTheObjectGrows) {
   // The sphere comes 40 % closer over 40 frames and goes back.
   const auto scale = [](int i) { return 1.0 + 0.4 * std::sin(M_PI * i / 80.0); };
-  const auto spec = [&](int i) { return at(Object::Sphere, 320, 240, i, scale(i)); };
+  const auto spec = [&](int i) { return frame_at(Object::Sphere, 320, 240, i, scale(i)); };
   TrackerParams tp;
   tp.acquisition = Acquisition::Manual;
-  const auto steps = run(80, spec, tp, Point2i{320, 240});
+  const auto steps = run_sequence(80, spec, tp, Point2i{320, 240});
   for (const Step& s : steps) ASSERT_TRUE(s.sane) << s.result.detail;
   // depth ∝ √area ∝ scale: compare with the truth, and check it peaks mid-way.
   for (int i = 0; i < 80; i += 10)
@@ -94,11 +57,11 @@ TEST(TrackingSequences, LossIsReportedWhenTheObjectLeavesAndItIsFoundAgainOnItsR
   const auto x = [](int i) {
     return i < 40 ? 380.0 + 14 * i : i < 60 ? 1000.0 : 1000.0 - 14 * (i - 60);
   };
-  const auto spec = [&](int i) { return at(Object::Sphere, x(i), 240, i); };
-  const auto steps = run(100, spec, TrackerParams{});
+  const auto spec = [&](int i) { return frame_at(Object::Sphere, x(i), 240, i); };
+  const auto steps = run_sequence(100, spec, TrackerParams{});
   int left = -1, back = -1;
   for (int i = 1; i < 100; ++i) {
-    if (left < 0 && steps[i].scene.true_area == 0) left = i;
+    if (left < 0 && steps[i].true_area == 0) left = i;
     if (left >= 0 && back < 0 && i > left && steps[i].visible) back = i;
   }
   ASSERT_GT(left, 0);
@@ -108,7 +71,7 @@ TEST(TrackingSequences, LossIsReportedWhenTheObjectLeavesAndItIsFoundAgainOnItsR
     if (steps[i].visible) EXPECT_TRUE(steps[i].sane) << i << ' ' << steps[i].result.detail;
   int reported = -1;
   for (int i = left; i < back; ++i) {
-    if (steps[i].scene.true_area > 0) continue;  // coming back in: acquiring it early is right
+    if (steps[i].true_area > 0) continue;  // coming back in: acquiring it early is right
     EXPECT_FALSE(has_features(steps[i].result.status))
         << "tracked nothing at frame " << i << ": area " << steps[i].result.features.area
         << " centroid " << steps[i].result.features.centroid.x << ", "
@@ -127,21 +90,21 @@ TEST(TrackingSequences, LossIsReportedWhenTheObjectLeavesAndItIsFoundAgainOnItsR
 TEST(TrackingSequences, ABriefOcclusionIsSurvived) {
   // A grey bar sweeps across the slowly moving hand.
   const auto spec = [](int i) {
-    SceneSpec s = at(Object::Hand, 280 + 2.0 * i, 260, i);
+    SceneSpec s = frame_at(Object::Hand, 280 + 2.0 * i, 260, i);
     const int bar_x = 120 + 25 * (i - 20);
     if (i >= 20 && i < 34) s.occluder = cv::Rect(bar_x, 0, 40, 480);
     return s;
   };
   TrackerParams tp;
   tp.acquisition = Acquisition::Manual;
-  const auto steps = run(50, spec, tp, Point2i{280, 280});
+  const auto steps = run_sequence(50, spec, tp, Point2i{280, 280});
   for (int i = 0; i < 20; ++i) EXPECT_TRUE(steps[i].sane) << i;
   int bad = 0;
   for (int i = 20; i < 34; ++i) bad += !steps[i].sane;
   // It may be lost under the bar, but it is never a wrong object, and it comes back.
   for (int i = 20; i < 50; ++i)
     if (has_features(steps[i].result.status))
-      EXPECT_LT(steps[i].result.features.area, 1.5 * steps[i].scene.true_area) << i;
+      EXPECT_LT(steps[i].result.features.area, 1.5 * steps[i].true_area) << i;
   for (int i = 40; i < 50; ++i) EXPECT_TRUE(steps[i].sane) << i << ' ' << steps[i].result.detail;
   std::cout << "frames not tracked under the bar: " << bad << " of 14\n";
 }
@@ -149,18 +112,18 @@ TEST(TrackingSequences, ABriefOcclusionIsSurvived) {
 TEST(TrackingSequences, GapsInTheEdgesAreRefusedNotReported) {
   // 2 % of the contour missing, differently on every frame: fills leak now and then.
   const auto spec = [](int i) {
-    SceneSpec s = at(Object::Hand, 300 + 2.0 * i, 250, i);
+    SceneSpec s = frame_at(Object::Hand, 300 + 2.0 * i, 250, i);
     s.gap_rate = 0.02;
     return s;
   };
   TrackerParams tp;
   tp.acquisition = Acquisition::Manual;
-  const auto steps = run(60, spec, tp, Point2i{300, 270});
+  const auto steps = run_sequence(60, spec, tp, Point2i{300, 270});
   int tracked = 0;
   for (const Step& s : steps) {
     if (has_features(s.result.status)) {
       ++tracked;
-      EXPECT_LT(s.result.features.area, 1.5 * s.scene.true_area) << "a leak was reported";
+      EXPECT_LT(s.result.features.area, 1.5 * s.true_area) << "a leak was reported";
     }
   }
   std::cout << "frames tracked with 2 % gaps: " << tracked << " of 60\n";
@@ -175,10 +138,10 @@ TEST(TrackingSequences, APushIsOneGesture) {
     const double approach = t > 2.5 ? std::min(0.3, 0.2 * (t - 2.5)) : 0.0;
     return 1.0 + push + approach;
   };
-  const auto spec = [&](int i) { return at(Object::Sphere, 320, 240, i, scale(i)); };
+  const auto spec = [&](int i) { return frame_at(Object::Sphere, 320, 240, i, scale(i)); };
   TrackerParams tp;
   tp.acquisition = Acquisition::Manual;
-  const auto steps = run(150, spec, tp, Point2i{320, 240});
+  const auto steps = run_sequence(150, spec, tp, Point2i{320, 240});
   int pushes = 0, at_frame = -1;
   for (int i = 0; i < 150; ++i) {
     ASSERT_TRUE(steps[i].sane) << i;

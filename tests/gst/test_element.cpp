@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scenes.hpp"
+#include "sequence.hpp"
 
 namespace {
 
@@ -414,6 +415,46 @@ TEST_F(Element, InputEdgeMapsInLimitedRangeYuv) {
   EXPECT_EQ(status_of(m), "ok");
   EXPECT_EQ(get_double(gst_message_get_structure(m), "area"), ring.area);
   gst_message_unref(m);
+}
+
+// The tracker through the element: no inner point given, a sphere that moves, then pushes toward
+// the camera once. Every tracked frame carries the 3D pointer; exactly one message says push.
+TEST_F(Element, AutoAcquisitionPoseAndOnePush) {
+  const DiscFrame caps{640, 480, 0, 0, 0};
+  set_caps(caps, "GRAY8");
+  const auto scale = [](int i) {
+    const double t = i / 30.0;
+    return 1.0 + (t > 1.0 && t < 1.4 ? 0.3 * std::sin(M_PI * (t - 1.0) / 0.4) : 0.0);
+  };
+  int tracked = 0, pushes = 0, acquired = 0;
+  double depth_max = 0;
+  for (int i = 0; i < 75; ++i) {
+    const auto spec = projtrack::bench::frame_at(projtrack::bench::Object::Sphere,
+                                                 300 + std::min(i, 10) * 3.0, 240, i, scale(i));
+    const projtrack::bench::Scene s = projtrack::bench::make_scene(spec, {});
+    GstBuffer* buf = gst_buffer_new_memdup(s.image.data, s.image.total());
+    gst_buffer_unref(push(buf, i));
+    GstMessage* m = message();
+    ASSERT_NE(m, nullptr);
+    const GstStructure* st = gst_message_get_structure(m);
+    if (status_of(m) == "ok") {
+      ++tracked;
+      const double x = get_double(st, "position-x"), y = get_double(st, "position-y");
+      EXPECT_NEAR(x, 2 * (s.true_centroid.x + 0.5) / 640 - 1, 0.05) << i;
+      EXPECT_NEAR(y, 2 * (s.true_centroid.y + 0.5) / 480 - 1, 0.05) << i;
+      depth_max = std::max(depth_max, get_double(st, "depth"));
+    }
+    acquired += gst_structure_has_field(st, "acquired");
+    if (const char* g = gst_structure_get_string(st, "gesture")) {
+      EXPECT_STREQ(g, "push");
+      ++pushes;
+    }
+    gst_message_unref(m);
+  }
+  EXPECT_EQ(acquired, 1);
+  EXPECT_GE(tracked, 70);  // all but the first frames, before there was motion to see
+  EXPECT_GT(depth_max, 1.15);
+  EXPECT_EQ(pushes, 1);
 }
 
 bool same_bytes(GstBuffer* a, GstBuffer* b) {

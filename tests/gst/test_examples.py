@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Runs the examples and the demo as a user would, and checks what they print and write.
 
-    test_examples.py c BINARY | python SCRIPT | demo SCRIPT OUTDIR
+    test_examples.py c BINARY | python SCRIPT | demo SCRIPT OUTDIR | cursor SCRIPT OUTDIR
 """
 import csv
 import os
@@ -40,11 +40,22 @@ def check_demo(script, out_dir):
     assert os.path.getsize(os.path.join(out_dir, 'demo.webm')) > 10000
 
 
+def check_cursor(script, out_dir):
+    png = os.path.join(out_dir, 'trajectory.png')
+    out = subprocess.run([script, '--generated', '--frames', '100', '--out', png],
+                         capture_output=True, text=True, timeout=300, check=True).stdout
+    assert 'acquired an object' in out, out
+    assert sum(' push ' in line for line in out.splitlines()) == 1, out
+    assert os.path.getsize(png) > 10000
+
+
 kind = sys.argv[1]
 if kind in ('c', 'python'):
     check_feature_lines([sys.argv[2]])
 elif kind == 'demo':
     check_demo(sys.argv[2], sys.argv[3])
+elif kind == 'cursor':
+    check_cursor(sys.argv[2], sys.argv[3])
 else:
     sys.exit(f'unknown kind {kind}')
 print(f'{kind}: ok')
