@@ -13,8 +13,14 @@
  * posts an element message named `projtrack` (see docs/element.md for every field). Without an
  * object the message's `status` says why (e.g. `no-inner-point`) and no meta is attached.
  *
- * The inner point comes from the `inner-point-x`/`inner-point-y` properties or from a click: a
- * left mouse-button press arriving from downstream (a click in the window of `autovideosink`)
+ * Without an inner point (`acquisition=auto`, the default) it finds the moving object itself, and
+ * finds it again after losing it: an estimate whose area leaks or collapses is refused and
+ * reported as `status=lost` with the last good features. Every tracked frame carries a 3D
+ * pointer: `position-x`, `position-y` in [-1, 1] and a relative `depth` (smoothed by a One Euro
+ * filter), and a quick push toward the camera posts `gesture=push`.
+ *
+ * An inner point can also be given: the `inner-point-x`/`inner-point-y` properties, or a click:
+ * a left mouse-button press arriving from downstream (a click in the window of `autovideosink`)
  * starts tracking at the clicked pixel; a right click stops it. With `draw=true` the element
  * draws what the estimator did: rays and hits, selected blocks, filled pixels or grid lines, the
  * bounding box, the centroid and the inner point.
@@ -29,8 +35,9 @@
  * projtrack inner-point-x=160 inner-point-y=120 ! fakesink
  * ]| Tracks videotestsrc's ball and prints a `projtrack` message per frame.
  * |[
- * gst-launch-1.0 v4l2src ! videoconvert ! projtrack draw=true ! videoconvert ! autovideosink
- * ]| Click on an object in the window to track it; the overlay shows the grid fill.
+ * gst-launch-1.0 -m v4l2src ! videoconvert ! projtrack draw=true ! videoconvert ! autovideosink
+ * ]| Wave an evenly coloured object: it is found, tracked and, when lost, found again; clicking
+ * on an object tracks that one. The overlay shows the grid fill.
  * |[
  * gst-launch-1.0 filesrc location=clip.mp4 ! decodebin ! videoconvert ! projtrack
  * method=pixel-filling draw=true inner-point-x=320 inner-point-y=240 ! videoconvert ! autovideosink
