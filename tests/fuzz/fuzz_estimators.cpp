@@ -1,0 +1,131 @@
+// libFuzzer target over the library: random edge maps and gray frames of random sizes and
+// strides, random inner points (inside, outside, extreme), every method, every parameter in and
+// out of range, and a few tracker frames. It checks the promises of the API, not just "no crash":
+// a result with features is finite, inside the frame, and its inner point is a free pixel.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "edge_detection.hpp"
+#include "estimator.hpp"
+#include "tracker.hpp"
+
+namespace {
+
+using namespace projtrack;
+
+// Reads the input front to back; past the end it yields zeros.
+class Input {
+ public:
+  Input(const std::uint8_t* d, std::size_t n) : d_(d), n_(n) {}
+  std::uint8_t byte() { return i_ < n_ ? d_[i_++] : 0; }
+  int in(int lo, int hi) { return lo + static_cast<int>(u16() % (hi - lo + 1)); }
+  std::uint16_t u16() { return static_cast<std::uint16_t>(byte() | byte() << 8); }
+  std::size_t left() const { return i_ < n_ ? n_ - i_ : 0; }
+
+ private:
+  const std::uint8_t* d_;
+  std::size_t n_, i_ = 0;
+};
+
+void check(bool ok, const char* what) {
+  if (!ok) {
+    std::fprintf(stderr, "fuzz: broken promise: %s\n", what);
+    std::abort();
+  }
+}
+
+void check_features(const Features& f, const ImageView& edges, Method m) {
+  if (!f.valid()) return;
+  check(std::isfinite(f.centroid.x) && std::isfinite(f.centroid.y) && std::isfinite(f.area),
+        "finite features");
+  check(f.area >= 0, "area >= 0");
+  const double w = edges.width, h = edges.height;
+  // Rays end half a pixel past the last free pixel, so polygons may reach half a pixel beyond.
+  check(f.area <= (w + 1) * (h + 1) + 1e-6, "area within the frame");
+  check(f.centroid.x >= -0.5 && f.centroid.x <= w - 0.5 && f.centroid.y >= -0.5 &&
+            f.centroid.y <= h - 0.5,
+        "centroid inside the frame");
+  check(f.bbox.x >= 0 && f.bbox.y >= 0 && f.bbox.right() <= w && f.bbox.bottom() <= h &&
+            !f.bbox.empty(),
+        "bounding box inside the frame");
+  check(edges.contains(f.inner_point.x, f.inner_point.y), "inner point inside the frame");
+  check(edges.at(f.inner_point.x, f.inner_point.y) == 0, "inner point on a free pixel");
+  check(edges.at(f.seed.x, f.seed.y) == 0, "seed on a free pixel");
+  if (!is_ray_method(m)) {
+    check(f.bbox.x <= f.centroid.x && f.centroid.x <= f.bbox.right() - 1 &&
+              f.bbox.y <= f.centroid.y && f.centroid.y <= f.bbox.bottom() - 1,
+          "fill centroid inside its box");
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  Input in(data, size);
+  const int w = in.in(0, 48), h = in.in(0, 48), pad = in.in(0, 9);
+  const int stride_mode = in.in(0, 15);  // mostly stride >= width; sometimes invalid
+  const std::ptrdiff_t stride = stride_mode == 0 ? std::max(0, w - 1) : w + pad;
+  Params p;
+  p.rays = in.in(0, 70);
+  p.recursion = in.in(0, 5);
+  p.block_size = in.in(0, 70);
+  p.grid_size = in.in(0, 70);
+  p.max_iterations = in.in(0, 12);
+  p.convergence = in.in(0, 5) == 0 ? std::numeric_limits<double>::quiet_NaN() : in.in(0, 80) / 8.0;
+  p.seed_radius = in.in(0, 70);
+  const int density = in.in(0, 255);  // share of edge pixels in the random part
+
+  // The frame: explicit bytes while the input lasts, then a pattern; padding is garbage.
+  std::vector<std::uint8_t> px(
+      static_cast<std::size_t>(std::max<std::ptrdiff_t>(stride, 1)) * std::max(h, 1) + 16, 0xA5);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::uint8_t b = in.left() ? in.byte() : static_cast<std::uint8_t>(x * 7 + y * 13);
+      px[y * stride + x] = b < density ? 255 : 0;
+    }
+  const ImageView edges(px.data(), w, h, stride);
+
+  for (Method m : kAllMethods) {
+    auto est = make_estimator(m);
+    const Point2i points[] = {{in.in(-60, 110), in.in(-60, 110)},
+                              {std::numeric_limits<int>::max(), in.in(0, 48)},
+                              {std::numeric_limits<int>::min(), std::numeric_limits<int>::min()},
+                              {w / 2, h / 2}};
+    for (Point2i q : points) {
+      Trace trace;
+      const Features f = est->estimate(edges, q, p, in.in(0, 1) ? &trace : nullptr);
+      check_features(f, edges, m);
+    }
+  }
+
+  // The edge detectors over the same bytes read as gray, then a few tracker frames on them.
+  EdgeParams ep;
+  ep.detector = static_cast<EdgeDetector>(in.in(0, 2));
+  ep.low = in.in(-10, 300);
+  ep.high = in.in(-10, 600);
+  ep.blur = in.in(-2, 20);
+  ep.input_black_level = in.in(0, 40);
+  EdgeMap map;
+  const ImageView detected = map.detect(edges, ep);
+  check(detected.empty() || (detected.width == w && detected.height == h), "edge map size");
+  Tracker tracker;
+  TrackerParams tp;
+  tp.acquisition = static_cast<Acquisition>(in.in(0, 2));
+  tp.strategy = static_cast<AutoAcquisition>(in.in(0, 1));
+  if (in.in(0, 1)) tracker.seed({in.in(-5, 60), in.in(-5, 60)});
+  for (int frame = 0; frame < 3; ++frame) {
+    const TrackResult r = tracker.track(edges, detected.empty() ? edges : detected, frame / 30.0,
+                                        static_cast<Method>(in.in(0, 5)), p, tp);
+    if (has_features(r.status))
+      check_features(r.features, detected.empty() ? edges : detected, static_cast<Method>(0));
+    if (r.has_pose)
+      check(std::isfinite(r.pose.x) && std::isfinite(r.pose.y) && std::isfinite(r.pose.depth),
+            "finite pose");
+  }
+  return 0;
+}
