@@ -70,6 +70,8 @@ class Element : public ::testing::Test {
   }
   void TearDown() override {
     gst_harness_teardown(h_);
+    // Queued messages hold the element: drop them, or element and bus keep each other alive.
+    gst_bus_set_flushing(bus_, TRUE);
     gst_object_unref(bus_);
   }
   void set_caps(const DiscFrame& scene, const char* format) {
