@@ -385,13 +385,7 @@ int run(const Options& opt) {
   // The comparison runs at the paper's own parameters (its figures: n = 32, 16^2 recursion shown
   // at n = 16 but n = 32 throughout here, 8-rasterization, 8-grid; the original system's
   // iteration rule): the claims are the paper's. The sweep then tunes our defaults.
-  Params paper;
-  paper.rays = 32;
-  paper.recursion = 2;
-  paper.block_size = 8;
-  paper.grid_size = 8;
-  paper.max_iterations = 10;
-  paper.convergence = 2.0;
+  const Params paper = paper_params();
   const std::vector<SceneSpec> specs = scene_specs(opt);
   auto all = contenders(true);
   Progress progress(static_cast<long>(specs.size()) + (opt.quick ? 12 : 30) + 6);

@@ -11,6 +11,17 @@ std::string out_of_range(const char* name, double value, double lo, double hi) {
 }
 }  // namespace
 
+Params paper_params() {
+  Params p;
+  p.rays = 32;
+  p.recursion = 2;
+  p.block_size = 8;
+  p.grid_size = 8;
+  p.max_iterations = 10;
+  p.convergence = 2.0;
+  return p;
+}
+
 std::string validate(const Params& p) {
   if (p.rays < kMinRays || p.rays > kMaxRays)
     return out_of_range("rays", p.rays, kMinRays, kMaxRays);

@@ -31,4 +31,8 @@ inline constexpr long long kMaxRaysPerCast = 1 << 20;
 // Empty when every parameter is in range; otherwise says which one is not, and why.
 std::string validate(const Params& p);
 
+// The paper's values (its figures: 32 rays, 16^2 recursion, 8-rasterization, an 8-grid) with the
+// original system's iteration rule (< 2 px, at most 10 iterations): for reproducing the paper.
+Params paper_params();
+
 }  // namespace projtrack

@@ -14,17 +14,6 @@ namespace {
 
 using test::Scene;
 
-Params paper_params() {
-  Params p;
-  p.rays = 32;
-  p.recursion = 2;
-  p.block_size = 8;
-  p.grid_size = 8;
-  p.max_iterations = 10;
-  p.convergence = 2.0;
-  return p;
-}
-
 struct Spread {
   double max_centroid_error = 0;  // px from the true centroid
   double centroid_spread = 0;     // px, the diagonal of the box around all centroids
