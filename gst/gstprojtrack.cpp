@@ -92,7 +92,6 @@ enum class SeedCommand { None, Seed, Reset };
 
 // Per-stream state: created in set_info, dropped in stop; touched by the streaming thread only.
 struct Stream {
-  projtrack::EdgeMap edge_map;
   projtrack::Tracker tracker;
   projtrack::Trace trace;
   std::vector<std::uint8_t> gray;  // packed RGB frames converted to gray
@@ -506,14 +505,14 @@ static TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Setti
   projtrack::EdgeParams edge_params = s.edges;
   edge_params.input_black_level = st.black_level;
   const projtrack::ImageView gray = projtrack::gst::frame_gray(frame, st.gray);
-  const projtrack::ImageView edges = st.edge_map.detect(gray, edge_params);
   projtrack::Trace* trace = s.draw ? &st.trace : nullptr;
   // Seconds for the smoothing and the push detector: the buffer's time, else 30 frames a second.
   const GstClockTime pts = GST_BUFFER_PTS(frame->buffer);
   const double t = GST_CLOCK_TIME_IS_VALID(pts) ? static_cast<double>(pts) / GST_SECOND
                                                 : static_cast<double>(st.frames) / 30.0;
   ++st.frames;
-  TrackResult r = st.tracker.track(gray, edges, t, s.method, s.params, s.tracker, trace);
+  // The tracker computes the edges itself: while tracking, only around the object.
+  TrackResult r = st.tracker.track(gray, edge_params, t, s.method, s.params, s.tracker, trace);
   if (s.draw) {
     projtrack::gst::draw_overlay(frame, s.method, r.features, st.trace);
     if (st.trace.rays_not_recorded)

@@ -21,10 +21,21 @@ ImageView view_of(const cv::Mat& m) {
 }  // namespace
 
 ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params) {
+  return detect(gray, params, Rect{0, 0, gray.width, gray.height});
+}
+
+ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const Rect& region) {
   if (!gray.valid()) return {};
-  cv::Mat src = wrap(gray);
+  const int x0 = std::clamp(region.x, 0, gray.width), y0 = std::clamp(region.y, 0, gray.height);
+  const int x1 = std::clamp(region.right(), x0, gray.width);
+  const int y1 = std::clamp(region.bottom(), y0, gray.height);
+  if (x1 <= x0 || y1 <= y0) return {};
+  // A ROI of the whole frame (not a Mat made at an offset): filters then see the real pixels
+  // around the region instead of replicating its border.
+  cv::Mat src = wrap(gray)(cv::Rect(x0, y0, x1 - x0, y1 - y0));
+  if (params.detector == EdgeDetector::Input && params.input_black_level <= 0)
+    return ImageView(gray.row(y0) + x0, x1 - x0, y1 - y0, gray.stride);
   if (params.detector == EdgeDetector::Input) {
-    if (params.input_black_level <= 0) return gray;
     cv::threshold(src, edges_, std::min(params.input_black_level, 255), 255, cv::THRESH_BINARY);
     return view_of(edges_);
   }

@@ -3,6 +3,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "geometry.hpp"
 #include "image_view.hpp"
 
 namespace projtrack {
@@ -36,6 +37,11 @@ class EdgeMap {
   // empty view; out-of-range parameters are clamped (negative thresholds to 0, blur to
   // [0, kMaxBlurPasses]).
   ImageView detect(const ImageView& gray, const EdgeParams& params);
+  // The edges of `region` of `gray` only (a view of region.width × region.height): what a tracker
+  // needs around its object, at a fraction of the cost. The first filter reads the real pixels
+  // around the region; within a few pixels of the region's own border the edges may differ from
+  // the whole frame's. `region` is clipped to the frame; an empty region gives an empty view.
+  ImageView detect(const ImageView& gray, const EdgeParams& params, const Rect& region);
 
  private:
   cv::Mat blurred_[2];

@@ -10,8 +10,6 @@
 
 namespace projtrack {
 
-namespace {
-
 Status border_status(const Rect& bbox, int width, int height) {
   const bool left = bbox.x <= 0, top = bbox.y <= 0;
   const bool right = bbox.right() >= width, bottom = bbox.bottom() >= height;
@@ -20,7 +18,16 @@ Status border_status(const Rect& bbox, int width, int height) {
   return Status::Ok;
 }
 
-}  // namespace
+void translate(Features& f, int dx, int dy) {
+  f.centroid.x += dx;
+  f.centroid.y += dy;
+  f.bbox.x += dx;
+  f.bbox.y += dy;
+  f.seed.x += dx;
+  f.seed.y += dy;
+  f.inner_point.x += dx;
+  f.inner_point.y += dy;
+}
 
 Features Estimator::estimate(const ImageView& edges, Point2i inner_point, const Params& params,
                              Trace* trace) {

@@ -75,4 +75,10 @@ void Estimator::iterate(const Context& ctx, Features& out, Work& work, bool rece
 
 std::unique_ptr<Estimator> make_estimator(Method m);
 
+// The status of an estimate covering `bbox` in a width × height frame: Ok, ReachedBorder (it
+// touches the border) or CoversFrame (it touches all four).
+Status border_status(const Rect& bbox, int width, int height);
+// Moves an estimate made in a region of the frame into frame coordinates.
+void translate(Features& f, int dx, int dy);
+
 }  // namespace projtrack

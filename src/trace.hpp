@@ -52,6 +52,23 @@ struct Trace {
     return last;
   }
 
+  // Moves everything recorded in a region of the frame into frame coordinates.
+  void translate(int dx, int dy) {
+    for (Ray& r : rays) {
+      r.origin.x += dx, r.origin.y += dy;
+      r.hit.x += dx, r.hit.y += dy;
+    }
+    for (Block& b : blocks) b.rect.x += dx, b.rect.y += dy;
+    for (Run& r : runs) {
+      r.first.x += dx, r.first.y += dy;
+      r.last.x += dx, r.last.y += dy;
+    }
+    for (Iteration& i : iterations) {
+      i.inner_point.x += dx, i.inner_point.y += dy;
+      i.centroid.x += dx, i.centroid.y += dy;
+    }
+  }
+
   void clear() {
     rays_not_recorded = 0;
     rays.clear();

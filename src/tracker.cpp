@@ -1,5 +1,6 @@
 #include "tracker.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -22,6 +23,15 @@ double share_inside(const std::vector<Point2i>& points, const Rect& r) {
 }
 
 }  // namespace
+
+ImageView EdgeSource::region(const Rect& r) {
+  if (map_) return map_->detect(gray_, params_, r);
+  const ImageView& f = given_;
+  const int x0 = std::clamp(r.x, 0, f.width), y0 = std::clamp(r.y, 0, f.height);
+  const int x1 = std::clamp(r.right(), x0, f.width), y1 = std::clamp(r.bottom(), y0, f.height);
+  if (!f.valid() || x1 <= x0 || y1 <= y0) return {};
+  return ImageView(f.row(y0) + x0, x1 - x0, y1 - y0, f.stride);
+}
 
 void Tracker::seed(Point2i p) {
   reset();
@@ -159,36 +169,85 @@ void Tracker::accept(const Features& f, double t, const ImageView& edges, const 
   r.raw_pose = raw_pose_;
 }
 
+TrackResult Tracker::track(const ImageView& gray, const EdgeParams& edge_params, double t, Method m,
+                           const Params& params, const TrackerParams& tp, Trace* trace) {
+  EdgeSource edges(edge_map_, gray, edge_params);
+  return track(gray, edges, t, m, params, tp, trace);
+}
+
 TrackResult Tracker::track(const ImageView& gray, const ImageView& edges, double t, Method m,
+                           const Params& params, const TrackerParams& tp, Trace* trace) {
+  EdgeSource given(edges);
+  return track(gray, given, t, m, params, tp, trace);
+}
+
+Features Tracker::estimate_around(EdgeSource& edges, Method m, const Params& params,
+                                  const TrackerParams& tp, Trace* trace) {
+  const ImageView& frame = edges.frame();
+  const Rect whole{0, 0, frame.width, frame.height};
+  Rect region = whole;
+  if (tp.edge_margin >= 0 && last_good_) {
+    const Rect& b = last_good_->bbox;
+    const int margin = std::max(16, static_cast<int>(tp.edge_margin * std::max(b.width, b.height)));
+    const int x0 = std::max(0, b.x - margin), y0 = std::max(0, b.y - margin);
+    const int x1 = std::min(frame.width, b.right() + margin);
+    const int y1 = std::min(frame.height, b.bottom() + margin);
+    if (x0 <= inner_->x && inner_->x < x1 && y0 <= inner_->y && inner_->y < y1)
+      region = {x0, y0, x1 - x0, y1 - y0};
+  }
+  for (;;) {
+    const ImageView e = edges.region(region);
+    Features f =
+        estimator(m).estimate(e, {inner_->x - region.x, inner_->y - region.y}, params, trace);
+    translate(f, region.x, region.y);
+    if (trace) trace->translate(region.x, region.y);
+    if (!f.valid()) return f;
+    // Reaching the region's edge (where it is not the frame's) means the region cut the estimate:
+    // redo it on the whole frame, so that the answer never depends on the region.
+    const Rect& b = f.bbox;
+    const bool cut = (b.x <= region.x && region.x > 0) || (b.y <= region.y && region.y > 0) ||
+                     (b.right() >= region.right() && region.right() < frame.width) ||
+                     (b.bottom() >= region.bottom() && region.bottom() < frame.height);
+    if (!cut || region == whole) {
+      f.status = border_status(f.bbox, frame.width, frame.height);
+      return f;
+    }
+    region = whole;
+  }
+}
+
+TrackResult Tracker::track(const ImageView& gray, EdgeSource& edges, double t, Method m,
                            const Params& params, const TrackerParams& tp, Trace* trace) {
   if (trace) trace->clear();
   TrackResult r;
-  if (!edges.valid()) {
-    r.status = edges.empty() ? Status::EmptyImage : Status::InvalidImage;
+  const ImageView& frame = edges.frame();
+  if (!frame.valid()) {
+    r.status = frame.empty() ? Status::EmptyImage : Status::InvalidImage;
     r.detail = "no usable frame";
     return r;
   }
   if (!inner_) {
-    std::optional<Features> f = acquire(gray, edges, m, params, tp, r.detail);
+    const ImageView all = edges.region({0, 0, frame.width, frame.height});
+    std::optional<Features> f = acquire(gray, all, m, params, tp, r.detail);
     if (!f) {
       r.status = tp.acquisition == Acquisition::Manual ? Status::NoInnerPoint : Status::Searching;
       return r;
     }
     r.detail.clear();
-    accept(*f, t, edges, tp, r);
+    accept(*f, t, frame, tp, r);
     return r;
   }
 
-  const Features f = estimator(m).estimate(edges, *inner_, params, trace);
+  const Features f = estimate_around(edges, m, params, tp, trace);
   if (f.status == Status::InvalidParameters || f.status == Status::InvalidImage ||
       f.status == Status::EmptyImage) {
     r.status = f.status;  // not the object's doing: say what is wrong, keep the track
     r.features = f;
     return r;
   }
-  std::string why = refused(f, edges, tp);
+  std::string why = refused(f, frame, tp);
   if (why.empty()) {
-    accept(f, t, edges, tp, r);
+    accept(f, t, frame, tp, r);
     return r;
   }
   // Refused: report the last good features and keep the inner point; the object may come back

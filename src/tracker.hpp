@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "edge_detection.hpp"
 #include "estimator.hpp"
 #include "motion_detector.hpp"
 #include "one_euro_filter.hpp"
@@ -42,6 +43,11 @@ struct TrackerParams {
   double min_area = 0.0005;
   int patience = 5;  // refused frames in a row before the track is dropped (and Auto searches)
 
+  // While tracking, edges are needed only around the object: the last box grown by this share of
+  // its larger side (at least 16 px). An estimate that reaches the region's edge is redone on the
+  // whole frame. Negative: always the whole frame.
+  double edge_margin = 0.25;
+
   bool smoothing = true;  // One Euro filter on x, y and depth
   OneEuroFilter::Params filter;
   PushDetector::Params push;
@@ -65,6 +71,24 @@ struct TrackResult {
   bool push = false;  // a push completed on this frame
 };
 
+// Where the tracker gets its edges: a given edge map of the whole frame, or edges computed on
+// demand for the region it needs (EdgeMap::detect with a region).
+class EdgeSource {
+ public:
+  explicit EdgeSource(const ImageView& frame_edges) : given_(frame_edges) {}
+  EdgeSource(EdgeMap& map, const ImageView& gray, const EdgeParams& params)
+      : map_(&map), gray_(gray), params_(params) {}
+  const ImageView& frame() const { return map_ ? gray_ : given_; }
+  // The edges of `region` (clipped to the frame).
+  ImageView region(const Rect& r);
+
+ private:
+  ImageView given_;
+  EdgeMap* map_ = nullptr;
+  ImageView gray_;
+  EdgeParams params_;
+};
+
 class Tracker {
  public:
   // Tracks from `p` on the next frame, whatever the acquisition mode.
@@ -73,21 +97,31 @@ class Tracker {
   void reset();
   const std::optional<Point2i>& inner_point() const { return inner_; }
 
-  // One frame: `gray` (for motion) and its `edges`, taken at `t` seconds.
+  // One frame taken at `t` seconds: `gray`, and edges computed here with `edge_params` — only
+  // around the object while tracking (TrackerParams::edge_margin).
+  TrackResult track(const ImageView& gray, const EdgeParams& edge_params, double t, Method m,
+                    const Params& params, const TrackerParams& tp, Trace* trace = nullptr);
+  // The same with the edges of the whole frame given (an edge map made elsewhere).
   TrackResult track(const ImageView& gray, const ImageView& edges, double t, Method m,
                     const Params& params, const TrackerParams& tp, Trace* trace = nullptr);
 
  private:
+  TrackResult track(const ImageView& gray, EdgeSource& edges, double t, Method m,
+                    const Params& params, const TrackerParams& tp, Trace* trace);
   Estimator& estimator(Method m);
-  // Empty when `f` is acceptable as a new track's first estimate; otherwise why not.
-  std::string implausible(const Features& f, const ImageView& edges, const TrackerParams& tp) const;
+  // The estimate from the inner point, on the edges around the last box when there is one.
+  Features estimate_around(EdgeSource& edges, Method m, const Params& params,
+                           const TrackerParams& tp, Trace* trace);
+  // Empty when `f` is acceptable as a new track's first estimate in `frame`; otherwise why not.
+  std::string implausible(const Features& f, const ImageView& frame, const TrackerParams& tp) const;
   // Empty when `f` continues the track; otherwise why it is refused.
-  std::string refused(const Features& f, const ImageView& edges, const TrackerParams& tp) const;
+  std::string refused(const Features& f, const ImageView& frame, const TrackerParams& tp) const;
   std::optional<Features> acquire(const ImageView& gray, const ImageView& edges, Method m,
                                   const Params& params, const TrackerParams& tp, std::string& why);
-  void accept(const Features& f, double t, const ImageView& edges, const TrackerParams& tp,
+  void accept(const Features& f, double t, const ImageView& frame, const TrackerParams& tp,
               TrackResult& r);
 
+  EdgeMap edge_map_;
   std::array<std::unique_ptr<Estimator>, kMethodCount> estimators_;  // made on first use
   std::optional<Point2i> inner_;
   std::optional<Features> last_good_;
