@@ -24,46 +24,55 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params) {
   return detect(gray, params, Rect{0, 0, gray.width, gray.height});
 }
 
+template <class T>
+cv::Mat EdgeMap::wrap_buffer(std::vector<T>& buffer, int rows, int cols, int type) {
+  const std::size_t n = static_cast<std::size_t>(rows) * cols;
+  if (buffer.size() < n) buffer.resize(n);
+  return cv::Mat(rows, cols, type, buffer.data());  // standalone: filters see no pixels beyond
+}
+
 ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const Rect& region) {
   if (!gray.valid()) return {};
   const int x0 = std::clamp(region.x, 0, gray.width), y0 = std::clamp(region.y, 0, gray.height);
   const int x1 = std::clamp(region.right(), x0, gray.width);
   const int y1 = std::clamp(region.bottom(), y0, gray.height);
   if (x1 <= x0 || y1 <= y0) return {};
-  // A ROI of the whole frame (not a Mat made at an offset): filters then see the real pixels
-  // around the region instead of replicating its border.
-  cv::Mat src = wrap(gray)(cv::Rect(x0, y0, x1 - x0, y1 - y0));
+  const int rows = y1 - y0, cols = x1 - x0;
   if (params.detector == EdgeDetector::Input && params.input_black_level <= 0)
-    return ImageView(gray.row(y0) + x0, x1 - x0, y1 - y0, gray.stride);
+    return ImageView(gray.row(y0) + x0, cols, rows, gray.stride);
+  // A ROI of the whole frame (not a Mat made at an offset): the first filter then sees the real
+  // pixels around the region instead of replicating its border.
+  cv::Mat src = wrap(gray)(cv::Rect(x0, y0, cols, rows));
+  cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);
   if (params.detector == EdgeDetector::Input) {
-    cv::threshold(src, edges_, std::min(params.input_black_level, 255), 255, cv::THRESH_BINARY);
-    return view_of(edges_);
+    cv::threshold(src, edges, std::min(params.input_black_level, 255), 255, cv::THRESH_BINARY);
+    return view_of(edges);
   }
 
   const int passes = std::clamp(params.blur, 0, kMaxBlurPasses);
   for (int i = 0; i < passes; ++i) {
-    cv::blur(src, blurred_[i % 2], cv::Size(3, 3), cv::Point(-1, -1), cv::BORDER_REPLICATE);
-    src = blurred_[i % 2];
+    cv::Mat dst = wrap_buffer(blurred_[i % 2], rows, cols, CV_8UC1);
+    cv::blur(src, dst, cv::Size(3, 3), cv::Point(-1, -1), cv::BORDER_REPLICATE);
+    src = dst;
   }
   const double low = std::max(0.0, params.low);
   const double high = std::max(0.0, params.high);
 
   if (params.detector == EdgeDetector::Canny) {
-    cv::Canny(src, edges_, low, high, 3, false);
-    return view_of(edges_);
+    cv::Canny(src, edges, low, high, 3, false);
+    return view_of(edges);
   }
-  cv::Sobel(src, gx_, CV_16S, 1, 0, 3, 1, 0, cv::BORDER_REPLICATE);
-  cv::Sobel(src, gy_, CV_16S, 0, 1, 3, 1, 0, cv::BORDER_REPLICATE);
-  edges_.create(src.rows, src.cols, CV_8UC1);
+  cv::Mat gx = wrap_buffer(gx_, rows, cols, CV_16SC1), gy = wrap_buffer(gy_, rows, cols, CV_16SC1);
+  cv::Sobel(src, gx, CV_16S, 1, 0, 3, 1, 0, cv::BORDER_REPLICATE);
+  cv::Sobel(src, gy, CV_16S, 0, 1, 3, 1, 0, cv::BORDER_REPLICATE);
   const int threshold = static_cast<int>(std::min(low, 1e9));
-  for (int y = 0; y < src.rows; ++y) {
-    const std::int16_t* dx = gx_.ptr<std::int16_t>(y);
-    const std::int16_t* dy = gy_.ptr<std::int16_t>(y);
-    std::uint8_t* e = edges_.ptr<std::uint8_t>(y);
-    for (int x = 0; x < src.cols; ++x)
-      e[x] = std::abs(dx[x]) + std::abs(dy[x]) >= threshold ? 255 : 0;
+  for (int y = 0; y < rows; ++y) {
+    const std::int16_t* dx = gx.ptr<std::int16_t>(y);
+    const std::int16_t* dy = gy.ptr<std::int16_t>(y);
+    std::uint8_t* e = edges.ptr<std::uint8_t>(y);
+    for (int x = 0; x < cols; ++x) e[x] = std::abs(dx[x]) + std::abs(dy[x]) >= threshold ? 255 : 0;
   }
-  return view_of(edges_);
+  return view_of(edges);
 }
 
 }  // namespace projtrack

@@ -1,7 +1,9 @@
 // Edge detection into a reusable edge map (non-zero = edge), the estimators' input.
 #pragma once
 
+#include <cstdint>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "geometry.hpp"
 #include "image_view.hpp"
@@ -44,9 +46,12 @@ class EdgeMap {
   ImageView detect(const ImageView& gray, const EdgeParams& params, const Rect& region);
 
  private:
-  cv::Mat blurred_[2];
-  cv::Mat gx_, gy_;
-  cv::Mat edges_;
+  // Buffers sized for the largest region seen; each call wraps the part it needs, so a region
+  // that changes size from frame to frame does not reallocate.
+  template <class T>
+  cv::Mat wrap_buffer(std::vector<T>& buffer, int rows, int cols, int type);
+  std::vector<std::uint8_t> blurred_[2], edges_;
+  std::vector<std::int16_t> gx_, gy_;
 };
 
 }  // namespace projtrack

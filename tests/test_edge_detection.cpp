@@ -102,6 +102,28 @@ TEST(EdgeMap, ReusesItsBuffersFromFrameToFrame) {
   }
 }
 
+TEST(EdgeMap, ARegionHasTheWholeFramesEdgesAwayFromItsBorder) {
+  const cv::Mat img = grey_disc();
+  for (EdgeDetector d : {EdgeDetector::Canny, EdgeDetector::Sobel}) {
+    EdgeMap whole_map, region_map;
+    EdgeParams p;
+    p.detector = d;
+    const ImageView whole = whole_map.detect(view_of(img), p);
+    const Rect r{90, 50, 140, 130};
+    const ImageView part = region_map.detect(view_of(img), p, r);
+    ASSERT_EQ(part.width, r.width);
+    ASSERT_EQ(part.height, r.height);
+    for (int y = 4; y < r.height - 4; ++y)
+      for (int x = 4; x < r.width - 4; ++x)
+        ASSERT_EQ(part.at(x, y), whole.at(r.x + x, r.y + y)) << x << ", " << y;
+    // Smaller regions reuse the same buffers; regions are clipped to the frame.
+    const std::uint8_t* buffer = part.data;
+    EXPECT_EQ(region_map.detect(view_of(img), p, {100, 60, 50, 40}).data, buffer);
+    EXPECT_EQ(region_map.detect(view_of(img), p, {300, 200, 100, 100}).width, 20);
+    EXPECT_TRUE(region_map.detect(view_of(img), p, {400, 10, 5, 5}).empty());
+  }
+}
+
 TEST(EdgeMap, BlurRemovesNoiseEdges) {
   cv::Mat noise(120, 160, CV_8U);
   cv::theRNG().state = 3;

@@ -71,11 +71,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int stride_mode = in.in(0, 15);  // mostly stride >= width; sometimes invalid
   const std::ptrdiff_t stride = stride_mode == 0 ? std::max(0, w - 1) : w + pad;
   Params p;
-  p.rays = in.in(0, 70);
+  p.rays = in.in(0, 40);  // bounded so one input stays well under a second: 40^3 rays a cast
   p.recursion = in.in(0, 5);
+  if (p.recursion > 3 && p.rays > 6) p.recursion = 3;
   p.block_size = in.in(0, 70);
   p.grid_size = in.in(0, 70);
-  p.max_iterations = in.in(0, 12);
+  p.max_iterations = in.in(0, 8);
   p.convergence = in.in(0, 5) == 0 ? std::numeric_limits<double>::quiet_NaN() : in.in(0, 80) / 8.0;
   p.seed_radius = in.in(0, 70);
   const int density = in.in(0, 255);  // share of edge pixels in the random part
