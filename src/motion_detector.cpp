@@ -7,6 +7,7 @@ namespace projtrack {
 
 bool MotionDetector::update(const ImageView& gray, const Params& p, Motion& out) {
   out.fraction = 0;
+  out.centroid = {};
   out.points.clear();
   if (!gray.valid()) return false;
   const int step = std::max(1, p.step);

@@ -13,8 +13,10 @@ bool PushDetector::update(double depth, double t) {
     return false;
   }
   double dt = t - t_prev_;
+  // Time that stands still or goes back (a seek): one frame, and the clock follows `t` again.
   if (!(dt > 0) || !std::isfinite(dt)) dt = 1.0 / 30.0;
-  t_prev_ += dt;
+  if (std::isfinite(t) && t < t_prev_) t_start_ -= t_prev_ - t;  // keep the push's duration
+  t_prev_ = std::isfinite(t) ? t : t_prev_ + dt;
   const double now = t_prev_;
   if (state_ == State::Resting) {
     if (depth > rest_ * (1 + p_.threshold)) {

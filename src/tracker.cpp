@@ -36,7 +36,6 @@ ImageView EdgeSource::region(const Rect& r) {
 void Tracker::seed(Point2i p) {
   reset();
   inner_ = p;
-  seeded_by_user_ = true;
 }
 
 void Tracker::reset() {
@@ -44,7 +43,6 @@ void Tracker::reset() {
   last_good_.reset();
   area0_ = 0;
   refused_in_a_row_ = 0;
-  seeded_by_user_ = false;
   push_.reset();
   motion_.reset();
 }
@@ -150,7 +148,8 @@ void Tracker::accept(const Features& f, double t, const ImageView& edges, const 
   last_good_ = f;
   refused_in_a_row_ = 0;
   raw_pose_ = {2 * (f.centroid.x + 0.5) / edges.width - 1,
-               2 * (f.centroid.y + 0.5) / edges.height - 1, std::sqrt(f.area / area0_)};
+               2 * (f.centroid.y + 0.5) / edges.height - 1,
+               area0_ > 0 ? std::sqrt(f.area / area0_) : 1.0};
   if (tp.smoothing) {
     fx_.set_params(tp.filter);
     fy_.set_params(tp.filter);
@@ -192,8 +191,11 @@ Features Tracker::estimate_around(EdgeSource& edges, Method m, const Params& par
     const int x0 = std::max(0, b.x - margin), y0 = std::max(0, b.y - margin);
     const int x1 = std::min(frame.width, b.right() + margin);
     const int y1 = std::min(frame.height, b.bottom() + margin);
-    if (x0 <= inner_->x && inner_->x < x1 && y0 <= inner_->y && inner_->y < y1)
-      region = {x0, y0, x1 - x0, y1 - y0};
+    // Anchored on the block grid, so rasterized ray-casting's blocks line up with the frame's.
+    const int bs = std::max(1, params.block_size);
+    const int ax = x0 - x0 % bs, ay = y0 - y0 % bs;
+    if (ax <= inner_->x && inner_->x < x1 && ay <= inner_->y && inner_->y < y1)
+      region = {ax, ay, x1 - ax, y1 - ay};
   }
   for (;;) {
     const ImageView e = edges.region(region);
@@ -204,10 +206,14 @@ Features Tracker::estimate_around(EdgeSource& edges, Method m, const Params& par
     if (!f.valid()) return f;
     // Reaching the region's edge (where it is not the frame's) means the region cut the estimate:
     // redo it on the whole frame, so that the answer never depends on the region.
+    // Edges within a few pixels of an inner border may differ from the frame's (later filter
+    // passes replicate the region's border), so coming that close counts as being cut too.
+    const int g = edges.border_guard();
     const Rect& b = f.bbox;
-    const bool cut = (b.x <= region.x && region.x > 0) || (b.y <= region.y && region.y > 0) ||
-                     (b.right() >= region.right() && region.right() < frame.width) ||
-                     (b.bottom() >= region.bottom() && region.bottom() < frame.height);
+    const bool cut = (b.x <= region.x + g && region.x > 0) ||
+                     (b.y <= region.y + g && region.y > 0) ||
+                     (b.right() >= region.right() - g && region.right() < frame.width) ||
+                     (b.bottom() >= region.bottom() - g && region.bottom() < frame.height);
     if (!cut || region == whole) {
       f.status = border_status(f.bbox, frame.width, frame.height);
       return f;
@@ -255,7 +261,8 @@ TrackResult Tracker::track(const ImageView& gray, EdgeSource& edges, double t, M
   ++refused_in_a_row_;
   r.status = Status::Lost;
   r.detail = why;
-  r.features = last_good_ ? *last_good_ : f;
+  // Only an accepted estimate is ever reported: with none yet, no features at all.
+  r.features = last_good_ ? *last_good_ : Features{};
   r.has_pose = last_good_.has_value();
   r.pose = pose_;
   r.raw_pose = raw_pose_;

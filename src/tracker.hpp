@@ -2,6 +2,7 @@
 // lost, finds it again, and turns its features into a 3D pointer (x, y, depth) with push clicks.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
@@ -41,7 +42,7 @@ struct TrackerParams {
   double leak_factor = 2.0;
   double max_area = 0.5;
   double min_area = 0.0005;
-  int patience = 5;  // refused frames in a row before the track is dropped (and Auto searches)
+  int patience = 5;  // refused frames in a row tolerated; the next one drops the track
 
   // While tracking, edges are needed only around the object: the last box grown by this share of
   // its larger side (at least 16 px). An estimate that reaches the region's edge is redone on the
@@ -81,6 +82,9 @@ class EdgeSource {
   const ImageView& frame() const { return map_ ? gray_ : given_; }
   // The edges of `region` (clipped to the frame).
   ImageView region(const Rect& r);
+  // How far from a region's inner border its edges may differ from the whole frame's: the blur
+  // passes after the first, and Canny's own 3×3 neighbourhood (0 for given edges).
+  int border_guard() const { return map_ ? std::clamp(params_.blur, 0, kMaxBlurPasses) + 3 : 0; }
 
  private:
   ImageView given_;
@@ -127,7 +131,6 @@ class Tracker {
   std::optional<Features> last_good_;
   double area0_ = 0;
   int refused_in_a_row_ = 0;
-  bool seeded_by_user_ = false;
   Pose pose_, raw_pose_;
   OneEuroFilter fx_, fy_, fdepth_;
   PushDetector push_;

@@ -54,6 +54,17 @@ TEST(PushDetector, ASlowPushIsNotAClick) {
             0);
 }
 
+TEST(PushDetector, TimeGoingBackwardsDoesNotStretchLaterPushes) {
+  PushDetector d;
+  int count = 0;
+  for (int i = 0; i < 120; ++i) count += d.update(1.0, 5.0 + i / 60.0);  // 60 fps, then a seek
+  for (int i = 0; i < 180; ++i) {
+    const double t = i / 60.0;
+    count += d.update(1.0 + bump(t, 1.0, 0.6, 0.3), t);
+  }
+  EXPECT_EQ(count, 1);
+}
+
 TEST(PushDetector, SmallAndNoisyChangesAreNotPushes) {
   PushDetector d;
   EXPECT_EQ(pushes(

@@ -107,6 +107,8 @@ TEST(Tracker, AUserSeedOnTheBackgroundIsRefused) {
   const TrackResult r = t.track(f.g(), f.e(), 0, Method::GridFilling, {}, manual());
   EXPECT_EQ(r.status, Status::Lost);
   EXPECT_NE(r.detail.find("covers"), std::string::npos) << r.detail;
+  EXPECT_FALSE(r.features.valid());  // a refused estimate is never reported as a measurement
+  EXPECT_FALSE(r.has_pose);
 }
 
 TEST(Tracker, CenterAcquisitionTakesWhatIsAtTheCentre) {

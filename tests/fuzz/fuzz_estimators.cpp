@@ -119,6 +119,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   tp.acquisition = static_cast<Acquisition>(in.in(0, 2));
   tp.strategy = static_cast<AutoAcquisition>(in.in(0, 1));
   if (in.in(0, 1)) tracker.seed({in.in(-5, 60), in.in(-5, 60)});
+  // The element's path: the tracker computes the edges itself, on regions around the object.
+  Tracker regional;
+  if (in.in(0, 1)) regional.seed({in.in(-5, 60), in.in(-5, 60)});
+  for (int frame = 0; frame < 3; ++frame) {
+    const TrackResult r =
+        regional.track(edges, ep, frame / 30.0, static_cast<Method>(in.in(0, 5)), p, tp);
+    if (has_features(r.status)) {
+      check(std::isfinite(r.features.area) && r.features.bbox.right() <= w &&
+                r.features.bbox.bottom() <= h && r.features.bbox.x >= 0 && r.features.bbox.y >= 0,
+            "regional estimate inside the frame");
+    }
+  }
   for (int frame = 0; frame < 3; ++frame) {
     const TrackResult r = tracker.track(edges, detected.empty() ? edges : detected, frame / 30.0,
                                         static_cast<Method>(in.in(0, 5)), p, tp);
