@@ -87,6 +87,9 @@ std::optional<Features> Tracker::acquire(const ImageView& gray, const ImageView&
                                          const Params& params, const TrackerParams& tp,
                                          std::string& why) {
   Estimator& est = estimator(m);
+  // Motion history from before a switch of mode (or from the last search) is stale.
+  if (tp.acquisition != last_acquisition_) motion_.reset();
+  last_acquisition_ = tp.acquisition;
   if (tp.acquisition == Acquisition::Manual) {
     why = "no inner point: set one, or click in the video";
     return std::nullopt;
@@ -119,6 +122,8 @@ std::optional<Features> Tracker::acquire(const ImageView& gray, const ImageView&
       continue;  // already inside the best region found
     Features f = est.estimate(edges, c, params);
     if (!implausible(f, edges, tp).empty()) continue;
+    // A sliver between two edges (seen on real footage: a 2×23 px strip) is not an object.
+    if (std::min(f.bbox.width, f.bbox.height) < tp.min_acquired_side) continue;
     if (tp.strategy == AutoAcquisition::MotionCentroid) return f;
     // Moving (holds changed pixels) and compact (fills its box), unlike a background region.
     const double box = static_cast<double>(f.bbox.width) * f.bbox.height;

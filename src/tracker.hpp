@@ -35,6 +35,7 @@ struct TrackerParams {
   MotionDetector::Params motion{25, 4};
   double min_motion = 0.002;  // share of the frame that must change before Auto looks
   int candidates = 12;        // seeds CompactMovingRegion tries per frame
+  int min_acquired_side = 8;  // px: a region thinner than this is not acquired
 
   // An estimate is refused (status Lost) when its area leaves [1/leak_factor, leak_factor] × the
   // last accepted one (a leak, or the inner point fell into a small region), exceeds
@@ -135,6 +136,7 @@ class Tracker {
   OneEuroFilter fx_, fy_, fdepth_;
   PushDetector push_;
   MotionDetector motion_;
+  Acquisition last_acquisition_ = Acquisition::Auto;
   MotionDetector::Motion moved_;
 };
 

@@ -142,5 +142,25 @@ TEST(Tracker, AutoAcquisitionFindsTheMovingObject) {
   }
 }
 
+TEST(Tracker, AutoAcquisitionIgnoresSlivers) {
+  // A 5 px wide bar moving: a closed region, but too thin to be an object worth tracking.
+  const auto bar = [](int x) {
+    Frame f;
+    f.gray = cv::Mat(240, 320, CV_8U, cv::Scalar(40));
+    f.gray(cv::Rect(x, 40, 5, 160)).setTo(210);
+    EdgeMap map;
+    const ImageView e = map.detect(f.g(), {});
+    f.edges = cv::Mat(240, 320, CV_8U, const_cast<std::uint8_t*>(e.data), e.stride).clone();
+    return f;
+  };
+  Tracker t;
+  for (int i = 0; i < 4; ++i) {
+    const Frame f = bar(100 + 6 * i);
+    EXPECT_EQ(t.track(f.g(), f.e(), i / 30.0, Method::PixelFilling, {}, TrackerParams{}).status,
+              Status::Searching)
+        << i;
+  }
+}
+
 }  // namespace
 }  // namespace projtrack
