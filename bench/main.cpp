@@ -62,16 +62,18 @@ struct Contender {
   std::function<Features(const Scene&, Point2i, const Params&, Trace*)> run;
 };
 
+Contender estimator_contender(Method m) {
+  auto est = std::shared_ptr<Estimator>(make_estimator(m));
+  return {std::string(method_name(m)),
+          [est](const Scene& s, Point2i seed, const Params& p, Trace* t) {
+            return est->estimate(s.edge_view(), seed, p, t);
+          }};
+}
+
 std::vector<Contender> contenders(bool with_peers) {
   std::vector<Contender> all;
   for (Method m : kAllMethods) {
-    auto est = std::shared_ptr<Estimator>(make_estimator(m));
-    all.push_back({std::string(method_name(m)),
-                   [est](const Scene& s, Point2i seed, const Params& p, Trace* t) {
-                     const ImageView e(s.edges.data, s.edges.cols, s.edges.rows,
-                                       static_cast<std::ptrdiff_t>(s.edges.step));
-                     return est->estimate(e, seed, p, t);
-                   }});
+    all.push_back(estimator_contender(m));
   }
   if (with_peers) {
     auto flood = std::make_shared<OpenCvFloodFill>();
@@ -236,13 +238,7 @@ int sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progres
       Params p = defaults;
       a.set(p, v);
       for (Method m : a.methods) {
-        Contender c{std::string(method_name(m)), nullptr};
-        auto est = std::shared_ptr<Estimator>(make_estimator(m));
-        c.run = [est](const Scene& s, Point2i seed, const Params& q, Trace* t) {
-          const ImageView e(s.edges.data, s.edges.cols, s.edges.rows,
-                            static_cast<std::ptrdiff_t>(s.edges.step));
-          return est->estimate(e, seed, q, t);
-        };
+        Contender c = estimator_contender(m);
         std::ostringstream prefix;
         prefix << a.name << ',' << v << ',';
         for (std::size_t i = 0; i < scenes.size(); ++i)
@@ -332,9 +328,7 @@ void figures(const Options& opt, const Params& p) {
     focus += cv::Size(60, 60);
     for (Method m : kAllMethods) {
       Trace trace;
-      const ImageView e(s.edges.data, s.edges.cols, s.edges.rows,
-                        static_cast<std::ptrdiff_t>(s.edges.step));
-      const Features f = make_estimator(m)->estimate(e, seed, p, &trace);
+      const Features f = make_estimator(m)->estimate(s.edge_view(), seed, p, &trace);
       const cv::Mat fig = draw_figure(s.image, s.edges, m, f, trace, s.true_centroid, focus);
       cv::imwrite(dir + "/" + std::string(method_name(m)) + "-" + object_name(o) + ".png", fig);
     }

@@ -17,6 +17,16 @@ enum class Object { Sphere, Hand };
 const char* object_name(Object o);
 
 struct SceneSpec {
+  SceneSpec(int w = 640, int h = 480, Object o = Object::Sphere, double gaps = 0,
+            bool specks = false, int inst = 0, double size = 1.0)
+      : width(w),
+        height(h),
+        object(o),
+        gap_rate(gaps),
+        spurious(specks),
+        instance(inst),
+        scale(size) {}
+
   int width = 640, height = 480;
   Object object = Object::Sphere;
   double gap_rate = 0;    // fraction of the contour's edge pixels removed, in runs of 1–3 px
@@ -56,6 +66,9 @@ struct Scene {
   int natural_gaps = 0;        // edge pixels added to close Canny's own breaks in the contour
   int gap_pixels_removed = 0;  // deliberate gaps
   int spurious_pixels = 0;
+
+  ImageView gray_view() const { return ImageView(image.data, image.cols, image.rows, image.step); }
+  ImageView edge_view() const { return ImageView(edges.data, edges.cols, edges.rows, edges.step); }
 };
 
 Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params);

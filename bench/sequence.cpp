@@ -14,12 +14,10 @@ std::vector<SequenceStep> run_sequence(int n, const std::function<SceneSpec(int)
   for (int i = 0; i < n; ++i) {
     const Scene s = make_scene(spec(i), EdgeParams{});
     if (first_area < 0) first_area = s.true_area;
-    const ImageView gray(s.image.data, s.image.cols, s.image.rows, s.image.step);
-    const ImageView edges(s.edges.data, s.edges.cols, s.edges.rows, s.edges.step);
     SequenceStep step;
     step.true_area = s.true_area;
     step.true_centroid = s.true_centroid;
-    step.result = tracker.track(gray, edges, i / 30.0, m, p, tp);
+    step.result = tracker.track(s.gray_view(), s.edge_view(), i / 30.0, m, p, tp);
     step.visible = s.true_area > 0.5 * first_area;
     const Features& f = step.result.features;
     step.sane = has_features(step.result.status) && s.true_area > 0 &&

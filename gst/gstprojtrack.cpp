@@ -442,8 +442,8 @@ static gboolean gst_projtrack_src_event(GstBaseTransform* trans, GstEvent* event
 // The features, the pose and the status: the ROI meta's parameters and the message's core.
 static GstStructure* result_structure(const TrackResult& r, Method method) {
   GstStructure* s = gst_structure_new(
-      "projtrack", "status", G_TYPE_STRING, std::string(projtrack::status_name(r.status)).c_str(),
-      "method", G_TYPE_STRING, std::string(projtrack::method_name(method)).c_str(), nullptr);
+      "projtrack", "status", G_TYPE_STRING, projtrack::status_name(r.status).data(), "method",
+      G_TYPE_STRING, projtrack::method_name(method).data(), nullptr);
   const Features& f = r.features;
   if (f.valid()) {  // when lost: the last accepted features
     gst_structure_set(s, "centroid-x", G_TYPE_DOUBLE, f.centroid.x, "centroid-y", G_TYPE_DOUBLE,
@@ -560,10 +560,9 @@ static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuff
     if (r.status == Status::InvalidParameters)
       GST_WARNING_OBJECT(self, "invalid parameters: %s", detail.c_str());
     else
-      GST_INFO_OBJECT(self, "status %s -> %s%s%s",
-                      std::string(projtrack::status_name(st.last_status)).c_str(),
-                      std::string(projtrack::status_name(r.status)).c_str(),
-                      detail.empty() ? "" : ": ", detail.c_str());
+      GST_INFO_OBJECT(self, "status %s -> %s%s%s", projtrack::status_name(st.last_status).data(),
+                      projtrack::status_name(r.status).data(), detail.empty() ? "" : ": ",
+                      detail.c_str());
     st.last_status = r.status;
   }
   if (r.push) GST_INFO_OBJECT(self, "gesture: push");

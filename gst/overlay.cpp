@@ -79,8 +79,12 @@ class Painter {
 
   void write(int x, int y, Rgb c, bool blend) {
     if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
-    std::uint8_t v[4];
-    components(c, v);
+    if (c.r != colour_.r || c.g != colour_.g || c.b != colour_.b || !converted_) {
+      components(c, values_);  // once per colour change, not per pixel
+      colour_ = c;
+      converted_ = true;
+    }
+    const std::uint8_t* v = values_;
     for (int k = 0; k < components_; ++k) {
       auto* p =
           static_cast<std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame_, k)) +
@@ -93,6 +97,9 @@ class Painter {
   GstVideoFrame* frame_;
   const GstVideoFormatInfo* info_;
   int width_, height_, components_;
+  Rgb colour_{0, 0, 0};
+  std::uint8_t values_[4] = {};
+  bool converted_ = false;
 };
 
 }  // namespace

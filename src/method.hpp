@@ -20,7 +20,8 @@ inline constexpr Method kAllMethods[kMethodCount] = {
     Method::RayCasting,           Method::IterativeRayCasting, Method::RecursiveRayCasting,
     Method::RasterizedRayCasting, Method::PixelFilling,        Method::GridFilling};
 
-// The short name used everywhere outside the code: GStreamer enum nicks, CSV columns, docs.
+// The short name used everywhere outside the code: GStreamer enum nicks, CSV columns, docs. The
+// view is of a string literal, so data() is null-terminated (usable as a C string).
 std::string_view method_name(Method m);
 std::optional<Method> method_from_name(std::string_view name);
 // True for the methods whose result depends on rays (and so on the inner point).

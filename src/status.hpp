@@ -22,7 +22,8 @@ enum class Status {
   InvalidParameters,  // a parameter out of range (see validate())
 };
 
-// Short lower-case name, as in GStreamer messages and CSV files ("ok", "reached-border", ...).
+// Short lower-case name, as in GStreamer messages and CSV files ("ok", "reached-border", ...). The
+// view is of a string literal, so data() is null-terminated (usable as a C string).
 std::string_view status_name(Status s);
 // Whether the result carries a centroid, an area and a bounding box.
 inline bool has_features(Status s) {

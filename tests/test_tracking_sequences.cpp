@@ -68,7 +68,9 @@ TEST(TrackingSequences, LossIsReportedWhenTheObjectLeavesAndItIsFoundAgainOnItsR
   ASSERT_GT(back, left);
   // Tracked while it was visible; then lost within 3 frames of leaving; never "ok" while away.
   for (int i = 3; i < left; ++i)
-    if (steps[i].visible) EXPECT_TRUE(steps[i].sane) << i << ' ' << steps[i].result.detail;
+    if (steps[i].visible) {
+      EXPECT_TRUE(steps[i].sane) << i << ' ' << steps[i].result.detail;
+    }
   int reported = -1;
   for (int i = left; i < back; ++i) {
     if (steps[i].true_area > 0) continue;  // coming back in: acquiring it early is right
@@ -103,8 +105,9 @@ TEST(TrackingSequences, ABriefOcclusionIsSurvived) {
   for (int i = 20; i < 34; ++i) bad += !steps[i].sane;
   // It may be lost under the bar, but it is never a wrong object, and it comes back.
   for (int i = 20; i < 50; ++i)
-    if (has_features(steps[i].result.status))
+    if (has_features(steps[i].result.status)) {
       EXPECT_LT(steps[i].result.features.area, 1.5 * steps[i].true_area) << i;
+    }
   for (int i = 40; i < 50; ++i) EXPECT_TRUE(steps[i].sane) << i << ' ' << steps[i].result.detail;
   std::cout << "frames not tracked under the bar: " << bad << " of 14\n";
 }

@@ -37,10 +37,9 @@ TEST(BenchScene, ClosedContoursAreClosed) {
       for (int instance : {0, 1}) {
         const Scene s = make_scene({w, h, o, 0, false, instance}, EdgeParams{});
         EXPECT_LE(s.natural_gaps, 0.01 * s.contour_pixels);
-        const ImageView e(s.edges.data, w, h, static_cast<std::ptrdiff_t>(s.edges.step));
         std::mt19937 rng(9);
         for (const Seed& seed : sample_seeds(s, 12, rng)) {
-          const Features f = fill->estimate(e, seed.p, {});
+          const Features f = fill->estimate(s.edge_view(), seed.p, {});
           EXPECT_EQ(f.status, Status::Ok) << object_name(o) << ' ' << w << ' ' << seed.part;
           EXPECT_NEAR(f.area / s.true_area, 0.97, 0.03) << object_name(o) << ' ' << w;
         }

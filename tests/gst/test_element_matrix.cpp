@@ -69,7 +69,9 @@ std::string check_message(GstMessage* m) {
   for (int i = 0; i < gst_structure_n_fields(s); ++i) {
     const char* name = gst_structure_nth_field_name(s, i);
     const GValue* v = gst_structure_get_value(s, name);
-    if (G_VALUE_HOLDS_DOUBLE(v)) EXPECT_TRUE(std::isfinite(g_value_get_double(v))) << name;
+    if (G_VALUE_HOLDS_DOUBLE(v)) {
+      EXPECT_TRUE(std::isfinite(g_value_get_double(v))) << name;
+    }
   }
   return status ? status : "";
 }
@@ -119,7 +121,9 @@ TEST_F(Matrix, EveryFormatAtEverySize) {
       gst_harness_set_src_caps_str(h_, caps_of(format, w, h).c_str());
       g_object_set(h_->element, "inner-point-x", w / 2, "inner-point-y", h / 2, nullptr);
       const std::string status = push(frame(format, w, h));
-      if (w >= 641) EXPECT_EQ(status, "ok");  // the disc is found and measured
+      if (w >= 641) {
+        EXPECT_EQ(status, "ok");  // the disc is found and measured
+      }
       ++cases;
     }
   }
@@ -138,7 +142,9 @@ TEST_F(Matrix, RenegotiationUpAndDownMidStream) {
     g_object_set(h_->element, "inner-point-x", s.w / 2, "inner-point-y", s.h / 2, nullptr);
     for (int i = 0; i < 3; ++i) {
       const std::string status = push(frame(s.format, s.w, s.h));
-      if (s.w >= 64) EXPECT_EQ(status, "ok") << s.format << ' ' << s.w;
+      if (s.w >= 64) {
+        EXPECT_EQ(status, "ok") << s.format << ' ' << s.w;
+      }
     }
   }
 }
