@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <opencv2/imgproc.hpp>
 
+#include "box_blur.hpp"
+
 namespace projtrack {
 
 namespace {
@@ -40,28 +42,33 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
   const int rows = y1 - y0, cols = x1 - x0;
   if (params.detector == EdgeDetector::Input && params.input_black_level <= 0)
     return ImageView(gray.row(y0) + x0, cols, rows, gray.stride);
-  // A ROI of the whole frame (not a Mat made at an offset): the first filter then sees the real
-  // pixels around the region instead of replicating its border.
-  cv::Mat src = wrap(gray)(cv::Rect(x0, y0, cols, rows));
+  const ImageView in_region(gray.row(y0) + x0, cols, rows, gray.stride);
   cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);
   if (params.detector == EdgeDetector::Input) {
-    cv::threshold(src, edges, std::min(params.input_black_level, 255), 255, cv::THRESH_BINARY);
+    cv::threshold(wrap(in_region), edges, std::min(params.input_black_level, 255), 255,
+                  cv::THRESH_BINARY);
     return view_of(edges);
   }
 
   const int passes = std::clamp(params.blur, 0, kMaxBlurPasses);
+  ImageView blurred = in_region;
   for (int i = 0; i < passes; ++i) {
+    // The first pass reads the frame around the region; later ones replicate the region's border.
     cv::Mat dst = wrap_buffer(blurred_[i % 2], rows, cols, CV_8UC1);
-    cv::blur(src, dst, cv::Size(3, 3), cv::Point(-1, -1), cv::BORDER_REPLICATE);
-    src = dst;
+    if (i == 0)
+      box_blur3(gray, Rect{x0, y0, cols, rows}, dst.data, static_cast<std::ptrdiff_t>(dst.step));
+    else
+      box_blur3(blurred, Rect{0, 0, cols, rows}, dst.data, static_cast<std::ptrdiff_t>(dst.step));
+    blurred = view_of(dst);
   }
   const double low = std::max(0.0, params.low);
   const double high = std::max(0.0, params.high);
 
   if (params.detector == EdgeDetector::Canny) {
-    cv::Canny(src, edges, low, high, 3, false);
+    canny_.detect(blurred, low, high, edges.data, static_cast<std::ptrdiff_t>(edges.step));
     return view_of(edges);
   }
+  const cv::Mat src = wrap(blurred);
   cv::Mat gx = wrap_buffer(gx_, rows, cols, CV_16SC1), gy = wrap_buffer(gy_, rows, cols, CV_16SC1);
   cv::Sobel(src, gx, CV_16S, 1, 0, 3, 1, 0, cv::BORDER_REPLICATE);
   cv::Sobel(src, gy, CV_16S, 0, 1, 3, 1, 0, cv::BORDER_REPLICATE);

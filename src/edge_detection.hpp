@@ -5,13 +5,14 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "canny.hpp"
 #include "geometry.hpp"
 #include "image_view.hpp"
 
 namespace projtrack {
 
 enum class EdgeDetector {
-  Canny,  // cv::Canny with hysteresis thresholds low/high (L1 gradient, 3×3 Sobel aperture)
+  Canny,  // Canny's, hysteresis thresholds low/high (L1 gradient, 3×3 Sobel): as cv::Canny
   Sobel,  // |Gx| + |Gy| of the 3×3 Sobel >= low: thick edges, as the original system used
   Input,  // the image already is an edge map: above the black level = edge
 };
@@ -52,6 +53,7 @@ class EdgeMap {
   cv::Mat wrap_buffer(std::vector<T>& buffer, int rows, int cols, int type);
   std::vector<std::uint8_t> blurred_[2], edges_;
   std::vector<std::int16_t> gx_, gy_;
+  CannyDetector canny_;
 };
 
 }  // namespace projtrack
