@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "vector_clones.hpp"
+
 namespace projtrack {
 
 namespace {
@@ -17,8 +19,8 @@ inline std::uint8_t div9(std::uint16_t sum) {
 
 }  // namespace
 
-void box_blur3(const ImageView& src, const Rect& region, std::uint8_t* dst,
-               std::ptrdiff_t dst_stride) {
+PROJTRACK_VECTOR_CLONES void box_blur3(const ImageView& src, const Rect& region, std::uint8_t* dst,
+                                       std::ptrdiff_t dst_stride) {
   const int w = region.width, x0 = region.x, W = src.width;
   if (w <= 0 || region.height <= 0) return;
   // Column sums of the three rows for x0 - 1 .. x0 + w, then the horizontal sum of three.

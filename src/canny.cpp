@@ -4,20 +4,29 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <cstring>
+
+#include "vector_clones.hpp"
 
 namespace projtrack {
 
 namespace {
 
-enum : std::uint8_t { kMaybe = 0, kNot = 1, kEdge = 2 };
+// The map is the output: edges 255, everything else 0 once the candidates are settled.
+enum : std::uint8_t { kNot = 0, kMaybe = 1, kEdge = 255 };
 
-// 3×3 Sobel of one row (rows above and below given, the border replicated) and its L1 norm.
-// __restrict__ (kept by not inlining): the rows never overlap, so the compiler vectorises.
-[[gnu::noinline]] void gradient_row(const std::uint8_t* __restrict__ up,
-                                    const std::uint8_t* __restrict__ mid,
-                                    const std::uint8_t* __restrict__ down, int w,
-                                    std::int16_t* __restrict__ dx, std::int16_t* __restrict__ dy,
-                                    std::int16_t* __restrict__ mag) {
+// 3×3 Sobel of one row (rows above and below given, the border replicated) and its L1 norm, or 0
+// where the norm is not above `low`: such a pixel is never an edge, and as a neighbour it loses
+// every comparison to a pixel above `low` either way, so the suppression's answers are unchanged
+// while runs of zeros can be skipped eight at a time.
+// __restrict__ (kept by not inlining): the rows never overlap, so the compiler vectorises; on
+// x86-64, once more for AVX2, chosen at load time when the CPU has it.
+PROJTRACK_VECTOR_CLONES void gradient_row(const std::uint8_t* __restrict__ up,
+                                          const std::uint8_t* __restrict__ mid,
+                                          const std::uint8_t* __restrict__ down, int w,
+                                          std::int16_t* __restrict__ dx,
+                                          std::int16_t* __restrict__ dy,
+                                          std::int16_t* __restrict__ mag, int low) {
   auto at = [w](const std::uint8_t* r, int x) { return int{r[std::clamp(x, 0, w - 1)]}; };
   auto edge = [&](int x) {
     const int gx = (at(up, x + 1) - at(up, x - 1)) + 2 * (at(mid, x + 1) - at(mid, x - 1)) +
@@ -26,68 +35,89 @@ enum : std::uint8_t { kMaybe = 0, kNot = 1, kEdge = 2 };
                    (at(up, x - 1) + 2 * at(up, x) + at(up, x + 1));
     dx[x] = static_cast<std::int16_t>(gx);
     dy[x] = static_cast<std::int16_t>(gy);
-    mag[x] = static_cast<std::int16_t>(std::abs(gx) + std::abs(gy));
+    const int norm = std::abs(gx) + std::abs(gy);
+    mag[x] = static_cast<std::int16_t>(norm > low ? norm : 0);
   };
   edge(0);
-  for (int x = 1; x < w - 1; ++x) {  // the hot loop: branch-free, vectorised
-    const int gx =
-        (up[x + 1] - up[x - 1]) + 2 * (mid[x + 1] - mid[x - 1]) + (down[x + 1] - down[x - 1]);
-    const int gy = (down[x - 1] + 2 * down[x] + down[x + 1]) - (up[x - 1] + 2 * up[x] + up[x + 1]);
-    dx[x] = static_cast<std::int16_t>(gx);
-    dy[x] = static_cast<std::int16_t>(gy);
-    mag[x] = static_cast<std::int16_t>(std::abs(gx) + std::abs(gy));
+  // The hot loop, in 16-bit lanes (every value fits: |gx|, |gy| <= 4 · 255), so the compiler
+  // vectorises it eight or sixteen pixels at a time.
+  const std::int16_t low16 = static_cast<std::int16_t>(std::clamp(low, -1, 4096));
+  for (int x = 1; x < w - 1; ++x) {
+    const std::int16_t gx = static_cast<std::int16_t>(
+        (up[x + 1] - up[x - 1]) + 2 * (mid[x + 1] - mid[x - 1]) + (down[x + 1] - down[x - 1]));
+    const std::int16_t gy = static_cast<std::int16_t>((down[x - 1] + 2 * down[x] + down[x + 1]) -
+                                                      (up[x - 1] + 2 * up[x] + up[x + 1]));
+    dx[x] = gx;
+    dy[x] = gy;
+    const std::int16_t norm = static_cast<std::int16_t>((gx < 0 ? -gx : gx) + (gy < 0 ? -gy : gy));
+    mag[x] = norm > low16 ? norm : std::int16_t{0};
   }
   if (w > 1) edge(w - 1);
 }
 
 }  // namespace
 
-void CannyDetector::detect(const ImageView& src, double low_threshold, double high_threshold,
-                           std::uint8_t* dst, std::ptrdiff_t dst_stride) {
+ImageView CannyDetector::detect(const ImageView& src, double low_threshold, double high_threshold) {
   const int w = src.width, h = src.height;
-  if (!src.valid()) return;
+  if (!src.valid()) return {};
   if (low_threshold > high_threshold) std::swap(low_threshold, high_threshold);
   // L1 norms never exceed 8 · 255, so larger thresholds all mean "above every norm".
   const int low = static_cast<int>(std::floor(std::clamp(low_threshold, -1.0, 4096.0)));
   const int high = static_cast<int>(std::floor(std::clamp(high_threshold, -1.0, 4096.0)));
 
-  const std::ptrdiff_t ms = w + 2;  // mag_ and map_ rows: one border pixel each side
-  const std::size_t n = static_cast<std::size_t>(w) * h,
-                    nb = static_cast<std::size_t>(ms) * (h + 2);
-  if (dx_.size() < n) dx_.resize(n), dy_.resize(n);
-  if (mag_.size() < nb) mag_.resize(nb), map_.resize(nb);
-
-  std::fill(mag_.begin(), mag_.begin() + ms, 0);
-  std::fill(mag_.begin() + ms * (h + 1), mag_.begin() + ms * (h + 2), 0);
-  for (int y = 0; y < h; ++y) {
-    std::int16_t* m = mag_.data() + ms * (y + 1);
-    m[0] = m[w + 1] = 0;
-    gradient_row(src.row(std::max(y - 1, 0)), src.row(y), src.row(std::min(y + 1, h - 1)), w,
-                 dx_.data() + static_cast<std::ptrdiff_t>(y) * w,
-                 dy_.data() + static_cast<std::ptrdiff_t>(y) * w, m + 1);
+  // Gradients live in a ring of three rows (the row being suppressed and its two neighbours), so
+  // they stay in cache; only the map is frame-sized. Rows of the ring and of the map have one
+  // border pixel each side: a zero magnitude, and "not an edge".
+  const std::ptrdiff_t ms = w + 2;
+  if (mag_.size() < static_cast<std::size_t>(3 * ms)) {
+    mag_.resize(3 * ms);
+    dx_.resize(3 * ms);
+    dy_.resize(3 * ms);
   }
+  const std::size_t nb = static_cast<std::size_t>(ms) * (h + 2);
+  if (map_.size() < nb) map_.resize(nb);
+  auto ring = [&](std::vector<std::int16_t>& v, int y) {
+    return v.data() + ((y + 3) % 3) * ms + 1;
+  };
+  auto gradient = [&](int y) {  // row y into the ring, or zeros outside the image
+    std::int16_t* m = ring(mag_, y);
+    m[-1] = m[w] = 0;
+    if (y < 0 || y >= h) {
+      std::fill(m, m + w, 0);
+      return;
+    }
+    gradient_row(src.row(std::max(y - 1, 0)), src.row(y), src.row(std::min(y + 1, h - 1)), w,
+                 ring(dx_, y), ring(dy_, y), m, low);
+  };
 
   // Non-maximum suppression across the gradient's direction (one of four sectors; tan 22.5° in
   // 15-bit fixed point), the same comparisons as OpenCV's, so ties resolve identically.
   constexpr int kShift = 15;
   constexpr int kTan22 = 13573;  // round(tan(22.5°) · 2^15)
   std::uint8_t* map = map_.data();
-  std::fill(map, map + ms, kNot);
-  std::fill(map + ms * (h + 1), map + ms * (h + 2), kNot);
+  std::memset(map, kNot, ms);
+  std::memset(map + ms * (h + 1), kNot, ms);
   stack_.clear();
+  maybes_.clear();
+  gradient(-1);
+  gradient(0);
   for (int y = 0; y < h; ++y) {
-    const std::int16_t* m = mag_.data() + ms * (y + 1) + 1;
-    const std::int16_t* gx = dx_.data() + static_cast<std::ptrdiff_t>(y) * w;
-    const std::int16_t* gy = dy_.data() + static_cast<std::ptrdiff_t>(y) * w;
+    gradient(y + 1);
+    const std::int16_t* up = ring(mag_, y - 1);
+    const std::int16_t* m = ring(mag_, y);
+    const std::int16_t* down = ring(mag_, y + 1);
+    const std::int16_t* gx = ring(dx_, y);
+    const std::int16_t* gy = ring(dy_, y);
     std::uint8_t* row = map + ms * (y + 1) + 1;
     row[-1] = row[w] = kNot;
     for (int x = 0; x < w; ++x) {
-      // Most pixels are far below `low`: skip eight at a time (an OR the compiler vectorises).
+      // Most pixels are far below `low` (stored as 0): skip eight at a time.
       if ((x & 7) == 0 && x + 8 <= w) {
-        bool any = false;
-        for (int k = 0; k < 8; ++k) any |= m[x + k] > low;
-        if (!any) {
-          std::fill(row + x, row + x + 8, kNot);
+        std::uint64_t a, b;
+        std::memcpy(&a, m + x, 8);
+        std::memcpy(&b, m + x + 4, 8);
+        if ((a | b) == 0) {
+          std::memset(row + x, kNot, 8);
           x += 7;
           continue;
         }
@@ -101,21 +131,22 @@ void CannyDetector::detect(const ImageView& src, double low_threshold, double hi
         if (ay < tg22) {
           peak = v > m[x - 1] && v >= m[x + 1];
         } else if (ay > tg22 + (ax << (kShift + 1))) {
-          peak = v > m[x - ms] && v >= m[x + ms];
+          peak = v > up[x] && v >= down[x];
         } else {
           const int s = (gx[x] ^ gy[x]) < 0 ? -1 : 1;
-          peak = v > m[x - ms - s] && v > m[x + ms + s];
+          peak = v > up[x - s] && v > down[x + s];
         }
         if (peak) {
+          const std::int32_t at = static_cast<std::int32_t>(ms * (y + 1) + 1 + x);
           mark = v > high ? kEdge : kMaybe;
-          if (mark == kEdge) stack_.push_back(static_cast<std::int32_t>(ms * (y + 1) + 1 + x));
+          (mark == kEdge ? stack_ : maybes_).push_back(at);
         }
       }
       row[x] = mark;
     }
   }
 
-  // Hysteresis: every candidate 8-connected to an edge is an edge.
+  // Hysteresis: every candidate 8-connected to an edge is an edge; the others are not.
   const std::ptrdiff_t around[8] = {-1, 1, -ms - 1, -ms, -ms + 1, ms - 1, ms, ms + 1};
   while (!stack_.empty()) {
     const std::ptrdiff_t p = stack_.back();
@@ -127,12 +158,9 @@ void CannyDetector::detect(const ImageView& src, double low_threshold, double hi
       }
     }
   }
-
-  for (int y = 0; y < h; ++y) {
-    const std::uint8_t* row = map + ms * (y + 1) + 1;
-    std::uint8_t* out = dst + static_cast<std::ptrdiff_t>(y) * dst_stride;
-    for (int x = 0; x < w; ++x) out[x] = row[x] == kEdge ? 255 : 0;
-  }
+  for (const std::int32_t p : maybes_)
+    if (map[p] == kMaybe) map[p] = kNot;
+  return ImageView(map + ms + 1, w, h, ms);
 }
 
 }  // namespace projtrack

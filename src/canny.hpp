@@ -13,15 +13,16 @@ namespace projtrack {
 
 class CannyDetector {
  public:
-  // Edges of `src` (replicated at its border) into `dst` (src's size, rows `dst_stride` apart):
-  // 255 on an edge, 0 elsewhere. Thresholds as cv::Canny's: swapped if low > high, floored.
-  void detect(const ImageView& src, double low, double high, std::uint8_t* dst,
-              std::ptrdiff_t dst_stride);
+  // Edges of `src` (replicated at its border): a view of src's size, 255 on an edge and 0
+  // elsewhere, valid until the next call. Thresholds as cv::Canny's: swapped if low > high,
+  // floored. An invalid `src` gives an empty view.
+  ImageView detect(const ImageView& src, double low, double high);
 
  private:
-  std::vector<std::int16_t> dx_, dy_, mag_;  // mag_ has a zero border of one pixel
-  std::vector<std::uint8_t> map_;            // 0 maybe an edge, 1 not, 2 an edge; border 1
+  std::vector<std::int16_t> dx_, dy_, mag_;  // three rows each, a border pixel each side
+  std::vector<std::uint8_t> map_;            // the edges, with a border of "not an edge"
   std::vector<std::int32_t> stack_;          // map_ offsets of edges still to extend
+  std::vector<std::int32_t> maybes_;         // map_ offsets of weak candidates
 };
 
 }  // namespace projtrack

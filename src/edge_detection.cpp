@@ -65,8 +65,7 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
   const double high = std::max(0.0, params.high);
 
   if (params.detector == EdgeDetector::Canny) {
-    canny_.detect(blurred, low, high, edges.data, static_cast<std::ptrdiff_t>(edges.step));
-    return view_of(edges);
+    return canny_.detect(blurred, low, high);
   }
   const cv::Mat src = wrap(blurred);
   cv::Mat gx = wrap_buffer(gx_, rows, cols, CV_16SC1), gy = wrap_buffer(gy_, rows, cols, CV_16SC1);

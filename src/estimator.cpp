@@ -19,6 +19,8 @@ Status border_status(const Rect& bbox, int width, int height) {
 }
 
 void translate(Features& f, int dx, int dy) {
+  f.reach.x += dx;
+  f.reach.y += dy;
   f.centroid.x += dx;
   f.centroid.y += dy;
   f.bbox.x += dx;
@@ -65,6 +67,8 @@ Features Estimator::estimate(const ImageView& edges, Point2i inner_point, const 
   f.inner_point =
       update_inner_point(edges, f.inner_point, f.centroid, fan_, update_hits_, work, trace, 0);
   f.status = border_status(f.bbox, edges.width, edges.height);
+  work.reach.add(f.bbox);
+  f.reach = work.reach.rect();
   f.rays_cast = work.rays;
   f.pixels_visited = work.pixels;
   return f;

@@ -17,6 +17,9 @@ struct Features {
   Point2d centroid;  // px, pixel centres at integer coordinates
   double area = 0;   // px², for every method (see docs/estimators.md for each mapping)
   Rect bbox;         // the pixels the estimate covers
+  // The pixels the estimate and the inner-point update read, within a pixel: the box and every
+  // ray's end. A caller that gave edges of a region checks this against the region's border.
+  Rect reach;
 
   Point2i seed;                 // the free pixel the estimate started from (the inner point, or the
                                 // nearest free pixel to it)

@@ -1,6 +1,7 @@
 #include "grid_filling.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace projtrack {
 
@@ -25,8 +26,11 @@ void GridFilling::run(const Context& ctx, Features& out, Work& work) {
   pending_.push_back({seed, true});
   std::uint64_t count = 0, sum_x = 0, sum_y = 0;
   BoundsAccumulator bounds;
+  // Grid cells larger than the object make the scaling meaningless; the frame bounds it.
+  const double cell = static_cast<double>(m) * m / (2.0 * m - 1.0);
+  const double limit = ctx.params.area_limit > 0 ? ctx.params.area_limit : HUGE_VAL;
 
-  while (!pending_.empty()) {
+  while (!pending_.empty() && static_cast<double>(count) * cell <= limit) {
     const Pending item = pending_.back();
     pending_.pop_back();
     const int x = item.p.x, y = item.p.y;
@@ -79,8 +83,6 @@ void GridFilling::run(const Context& ctx, Features& out, Work& work) {
     }
   }
 
-  // Grid cells larger than the object make the scaling meaningless; the frame bounds it.
-  const double cell = static_cast<double>(m) * m / (2.0 * m - 1.0);
   out.area = std::min(static_cast<double>(count) * cell, static_cast<double>(width) * height);
   out.centroid = {static_cast<double>(sum_x) / count, static_cast<double>(sum_y) / count};
   out.bbox = bounds.rect();

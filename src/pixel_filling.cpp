@@ -1,5 +1,7 @@
 #include "pixel_filling.hpp"
 
+#include <cmath>
+
 namespace projtrack {
 
 void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
@@ -10,8 +12,9 @@ void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
   pending_.push_back(out.seed);
   std::uint64_t count = 0, sum_x = 0, sum_y = 0;
   BoundsAccumulator bounds;
+  const double limit = ctx.params.area_limit > 0 ? ctx.params.area_limit : HUGE_VAL;
 
-  while (!pending_.empty()) {
+  while (!pending_.empty() && static_cast<double>(count) <= limit) {
     const Point2i s = pending_.back();
     pending_.pop_back();
     const std::uint8_t* e = edges.row(s.y);

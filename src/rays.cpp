@@ -24,6 +24,7 @@ Point2d cast_fan(const ImageView& edges, Point2i origin, const RayFan& fan,
   for (int k = 0; k < fan.count(); ++k) {
     const RayHit h = fan.cast(edges, origin, k);
     work.pixels += h.length + 1;
+    work.reach.add(h.last_free.x, h.last_free.y);
     sx += h.hit.x;
     sy += h.hit.y;
     hits.push_back(h);

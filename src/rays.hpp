@@ -13,6 +13,7 @@ namespace projtrack {
 struct Work {
   std::uint64_t rays = 0;
   std::uint64_t pixels = 0;
+  BoundsAccumulator reach;  // every ray's last free pixel: where the rays read up to
 };
 
 struct RayHit {

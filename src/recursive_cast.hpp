@@ -38,6 +38,7 @@ Point2d RecursiveCast::cast(const ImageView& edges, Point2i origin, const RayFan
       for (int k = 0; k < n; ++k) {
         const RayHit h = fan.cast(edges, o, k, visit);
         work.pixels += h.length + 1;
+        work.reach.add(h.last_free.x, h.last_free.y);
         hits_.push_back(h);
         if (trace) trace->add_ray({to_double(o), h.hit, iteration, level});
       }

@@ -53,6 +53,15 @@ Estimator& Tracker::estimator(Method m) {
   return *e;
 }
 
+double Tracker::area_limit(const ImageView& frame, const Params& params,
+                           const TrackerParams& tp) const {
+  // Just above what would be refused anyway: a larger estimate is a leak, whatever its size.
+  double limit = std::max(tp.max_area, 0.0) * frame.width * frame.height;
+  if (last_good_ && tp.leak_factor > 0) limit = std::min(limit, tp.leak_factor * last_good_->area);
+  limit = std::floor(limit) + 1;
+  return params.area_limit > 0 ? std::min(limit, params.area_limit) : limit;
+}
+
 std::string Tracker::implausible(const Features& f, const ImageView& edges,
                                  const TrackerParams& tp) const {
   if (!f.valid()) return f.detail.empty() ? std::string(status_name(f.status)) : f.detail;
@@ -73,7 +82,11 @@ std::string Tracker::refused(const Features& f, const ImageView& edges,
   const double ratio = f.area / last_good_->area;
   char buf[96];
   if (ratio > tp.leak_factor) {
-    std::snprintf(buf, sizeof buf, "the area jumped %.1f× since the last frame (a leak)", ratio);
+    if (f.area > limit_)
+      std::snprintf(buf, sizeof buf, "the area passed %.1f× the last frame's: a leak, not filled",
+                    tp.leak_factor);
+    else
+      std::snprintf(buf, sizeof buf, "the area jumped %.1f× since the last frame (a leak)", ratio);
     return buf;
   }
   if (ratio < 1 / tp.leak_factor) {
@@ -116,11 +129,13 @@ std::optional<Features> Tracker::acquire(const ImageView& gray, const ImageView&
   }
   std::optional<Features> best;
   double best_score = -1;
+  Params limited = params;
+  limited.area_limit = area_limit(edges, params, tp);
   for (const Point2i& c : candidates) {
     if (best && c.x >= best->bbox.x && c.y >= best->bbox.y && c.x < best->bbox.right() &&
         c.y < best->bbox.bottom())
       continue;  // already inside the best region found
-    Features f = est.estimate(edges, c, params);
+    Features f = est.estimate(edges, c, limited);
     if (!implausible(f, edges, tp).empty()) continue;
     // A sliver between two edges (seen on real footage: a 2×23 px strip) is not an object.
     if (std::min(f.bbox.width, f.bbox.height) < tp.min_acquired_side) continue;
@@ -149,6 +164,9 @@ void Tracker::accept(const Features& f, double t, const ImageView& edges, const 
     push_.reset();
     r.acquired = true;
   }
+  velocity_ = last_good_ ? Point2d{f.centroid.x - last_good_->centroid.x,
+                                   f.centroid.y - last_good_->centroid.y}
+                         : Point2d{0, 0};
   inner_ = f.inner_point;
   last_good_ = f;
   refused_in_a_row_ = 0;
@@ -185,36 +203,66 @@ TrackResult Tracker::track(const ImageView& gray, const ImageView& edges, double
   return track(gray, given, t, m, params, tp, trace);
 }
 
+namespace {
+
+// `box` grown by `margin` on every side, clipped to the frame and anchored on the block grid (so
+// rasterized ray-casting's blocks line up with the frame's).
+Rect grown(const Rect& box, int margin, int block_size, const ImageView& frame) {
+  const int bs = std::max(1, block_size);
+  int x0 = std::max(0, box.x - margin), y0 = std::max(0, box.y - margin);
+  const int x1 = std::min(frame.width, box.right() + margin);
+  const int y1 = std::min(frame.height, box.bottom() + margin);
+  x0 -= x0 % bs;
+  y0 -= y0 % bs;
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+Rect united(const Rect& a, const Rect& b) {
+  const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+  return {x0, y0, std::max(a.right(), b.right()) - x0, std::max(a.bottom(), b.bottom()) - y0};
+}
+
+bool holds(const Rect& r, Point2i p) {
+  return r.x <= p.x && p.x < r.right() && r.y <= p.y && p.y < r.bottom();
+}
+
+}  // namespace
+
 Features Tracker::estimate_around(EdgeSource& edges, Method m, const Params& params,
                                   const TrackerParams& tp, Trace* trace) {
   const ImageView& frame = edges.frame();
   const Rect whole{0, 0, frame.width, frame.height};
   Rect region = whole;
+  int margin = 0;
+  Params limited = params;
+  limited.area_limit = limit_ = area_limit(frame, params, tp);
   if (tp.edge_margin >= 0 && last_good_) {
+    // The last box and where it would be if it kept its last motion, with a margin around both.
     const Rect& b = last_good_->bbox;
-    const int margin = std::max(16, static_cast<int>(tp.edge_margin * std::max(b.width, b.height)));
-    const int x0 = std::max(0, b.x - margin), y0 = std::max(0, b.y - margin);
-    const int x1 = std::min(frame.width, b.right() + margin);
-    const int y1 = std::min(frame.height, b.bottom() + margin);
-    // Anchored on the block grid, so rasterized ray-casting's blocks line up with the frame's.
-    const int bs = std::max(1, params.block_size);
-    const int ax = x0 - x0 % bs, ay = y0 - y0 % bs;
-    if (ax <= inner_->x && inner_->x < x1 && ay <= inner_->y && inner_->y < y1)
-      region = {ax, ay, x1 - ax, y1 - ay};
+    const Rect ahead{b.x + static_cast<int>(std::lround(velocity_.x)),
+                     b.y + static_cast<int>(std::lround(velocity_.y)), b.width, b.height};
+    margin = std::max(16, static_cast<int>(tp.edge_margin * std::max(b.width, b.height)));
+    const Rect r = grown(united(b, ahead), margin, params.block_size, frame);
+    if (holds(r, *inner_)) region = r;
   }
-  for (;;) {
+  for (int growths = 0;; ++growths) {
     const ImageView e = edges.region(region);
     Features f =
-        estimator(m).estimate(e, {inner_->x - region.x, inner_->y - region.y}, params, trace);
+        estimator(m).estimate(e, {inner_->x - region.x, inner_->y - region.y}, limited, trace);
     translate(f, region.x, region.y);
     if (trace) trace->translate(region.x, region.y);
     if (!f.valid()) return f;
+    // A fill stopped at the limit is refused on any region: no need to look further.
+    if (f.area > limit_) {
+      f.status = border_status(f.bbox, frame.width, frame.height);
+      return f;
+    }
     // Reaching the region's edge (where it is not the frame's) means the region cut the estimate:
-    // redo it on the whole frame, so that the answer never depends on the region.
+    // redo it on a larger region, so that the answer never depends on the region.
     // Edges within a few pixels of an inner border may differ from the frame's (later filter
     // passes replicate the region's border), so coming that close counts as being cut too.
     const int g = edges.border_guard();
-    const Rect& b = f.bbox;
+    const Rect& b = f.reach;
     const bool cut = (b.x <= region.x + g && region.x > 0) ||
                      (b.y <= region.y + g && region.y > 0) ||
                      (b.right() >= region.right() - g && region.right() < frame.width) ||
@@ -223,7 +271,10 @@ Features Tracker::estimate_around(EdgeSource& edges, Method m, const Params& par
       f.status = border_status(f.bbox, frame.width, frame.height);
       return f;
     }
-    region = whole;
+    // First around the cut estimate with four times the margin (a fast or growing object), then
+    // the whole frame (a leak, which the tracker must see whole to refuse).
+    margin *= 4;
+    region = growths == 0 ? grown(united(region, b), margin, params.block_size, frame) : whole;
   }
 }
 

@@ -45,10 +45,11 @@ struct TrackerParams {
   double min_area = 0.0005;
   int patience = 5;  // refused frames in a row tolerated; the next one drops the track
 
-  // While tracking, edges are needed only around the object: the last box grown by this share of
-  // its larger side (at least 16 px). An estimate that reaches the region's edge is redone on the
-  // whole frame. Negative: always the whole frame.
-  double edge_margin = 0.25;
+  // While tracking, edges are needed only around the object: the last box, and that box moved by
+  // the object's last motion, grown by this share of its larger side (at least 16 px). An estimate
+  // that reaches the region's edge is redone on a region grown by four times the margin, then on
+  // the whole frame. Negative: always the whole frame.
+  double edge_margin = 0.1;
 
   bool smoothing = true;  // One Euro filter on x, y and depth
   OneEuroFilter::Params filter;
@@ -121,6 +122,8 @@ class Tracker {
   std::string implausible(const Features& f, const ImageView& frame, const TrackerParams& tp) const;
   // Empty when `f` continues the track; otherwise why it is refused.
   std::string refused(const Features& f, const ImageView& frame, const TrackerParams& tp) const;
+  // The area above which an estimate is refused (the fills stop there), px².
+  double area_limit(const ImageView& frame, const Params& params, const TrackerParams& tp) const;
   std::optional<Features> acquire(const ImageView& gray, const ImageView& edges, Method m,
                                   const Params& params, const TrackerParams& tp, std::string& why);
   void accept(const Features& f, double t, const ImageView& frame, const TrackerParams& tp,
@@ -130,6 +133,9 @@ class Tracker {
   std::array<std::unique_ptr<Estimator>, kMethodCount> estimators_;  // made on first use
   std::optional<Point2i> inner_;
   std::optional<Features> last_good_;
+  Point2d velocity_;
+  double limit_ = 0;  // the area limit of the current frame's estimate  // of the centroid between
+                      // the last two accepted frames, px per frame
   double area0_ = 0;
   int refused_in_a_row_ = 0;
   Pose pose_, raw_pose_;

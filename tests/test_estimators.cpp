@@ -219,6 +219,35 @@ TEST(Leaks, PixelFillingLeaksThroughAOnePixelGap) {
   }
 }
 
+// An area limit stops a leaking fill early: its area passes the limit (so a caller can tell), and
+// it visits a fraction of the pixels the full leak visits. Under the limit nothing changes.
+TEST(Leaks, AnAreaLimitStopsALeakingFillEarly) {
+  for (Method m : {Method::PixelFilling, Method::GridFilling}) {
+    for (Scene s : test::all_scenes()) {
+      auto est = make_estimator(m);
+      const Point2i inside = rightmost_interior(s, round_to_pixel(s.centroid).y + 1);
+      Params closed;
+      closed.grid_size = 4;
+      const Features whole = est->estimate(s.edge_view(), inside, closed);
+      Params loose = closed;
+      loose.area_limit = 1.5 * whole.area;
+      const Features same = est->estimate(s.edge_view(), inside, loose);
+      EXPECT_EQ(same.area, whole.area) << s.name;
+      EXPECT_EQ(same.centroid.x, whole.centroid.x) << s.name;
+
+      test::open_gap_right(s, inside.x, inside.y);
+      const Features leak = est->estimate(s.edge_view(), inside, closed);
+      ASSERT_GT(leak.area, 3 * whole.area) << s.name;
+      Params limited = closed;
+      limited.area_limit = 2 * whole.area;
+      const Features stopped = est->estimate(s.edge_view(), inside, limited);
+      EXPECT_GT(stopped.area, limited.area_limit) << s.name;
+      EXPECT_LT(stopped.area, leak.area) << s.name;
+      EXPECT_LT(stopped.pixels_visited, leak.pixels_visited) << s.name;
+    }
+  }
+}
+
 TEST(Leaks, GridFillingHoldsWhenTheGapFallsBetweenGridLinesAndLeaksOnOne) {
   Params p = paper_params();
   auto grid = make_estimator(Method::GridFilling);

@@ -1,6 +1,7 @@
 // Parameters, method and status names.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -33,6 +34,10 @@ TEST(Params, EveryRangeEndIsAcceptedAndOneBeyondIsNot) {
   check([](Params& p, int v) { p.max_iterations = v; }, 1, kMaxIterations, "max_iterations");
   check([](Params& p, double v) { p.convergence = v; }, 0.0, kMaxConvergence, "convergence");
   check([](Params& p, int v) { p.seed_radius = v; }, 0, kMaxSeedRadius, "seed_radius");
+  check([](Params& p, double v) { p.area_limit = v; }, 0.0, kMaxAreaLimit, "area_limit");
+  Params p;
+  p.area_limit = std::nan("");
+  EXPECT_NE(validate(p).find("area_limit"), std::string::npos);
 }
 
 TEST(Method, NamesRoundTrip) {

@@ -100,6 +100,38 @@ TEST(Tracker, RefusesALeakReportsTheLastGoodFeaturesThenDropsTheTrack) {
             Status::NoInnerPoint);
 }
 
+// A leak is refused as soon as the fill passes leak_factor × the last area: it costs about the
+// object's size, not the frame's.
+TEST(Tracker, ALeakStopsAtTheLeakFactorInsteadOfFillingTheFrame) {
+  const Frame closed = disc_frame(320, 240, 30, 1280, 720);
+  Frame open{closed.gray.clone(), closed.edges.clone()};
+  open.edges(cv::Rect(345, 238, 12, 5)).setTo(0);  // on the grid row through the seed
+  for (Method m : {Method::PixelFilling, Method::GridFilling}) {
+    Tracker t;
+    t.seed({320, 240});
+    const TrackResult good = t.track(closed.g(), closed.e(), 0, m, {}, manual());
+    ASSERT_EQ(good.status, Status::Ok) << good.detail;
+    const TrackResult r = t.track(open.g(), open.e(), 1 / 30.0, m, {}, manual());
+    ASSERT_EQ(r.status, Status::Lost);
+    EXPECT_NE(r.detail.find("a leak, not filled"), std::string::npos) << r.detail;
+    EXPECT_EQ(r.features.area, good.features.area);
+    // The full leak would visit the whole 1280×720 frame; stopped, a few times the disc.
+    const Features full = make_estimator(m)->estimate(open.e(), {320, 240}, {});
+    ASSERT_GT(full.area, 100 * good.features.area);
+    Trace trace;
+    Tracker t2;
+    t2.seed({320, 240});
+    t2.track(closed.g(), closed.e(), 0, m, {}, manual());
+    const TrackResult r2 = t2.track(open.g(), open.e(), 1 / 30.0, m, {}, manual(), &trace);
+    ASSERT_EQ(r2.status, Status::Lost);
+    std::uint64_t filled = 0;
+    for (const auto& run : trace.runs)
+      filled +=
+          static_cast<std::uint64_t>(run.last.x - run.first.x + 1) * (run.last.y - run.first.y + 1);
+    EXPECT_LT(filled, 10 * good.features.area) << method_name(m);
+  }
+}
+
 TEST(Tracker, AUserSeedOnTheBackgroundIsRefused) {
   const Frame f = disc_frame(160, 120, 40);
   Tracker t;
