@@ -280,7 +280,7 @@ def main():
               "cleared only in the box the fill wrote.\n")
 
     md.append("## Reproduce\n")
-    md.append("```\n./run bench --speed          # about 5 minutes; writes docs/performance.md\n"
+    md.append("```\n./run bench --speed          # a few minutes; writes docs/performance.md\n"
               "./run bench --speed --quick  # a smoke run into build/speed-quick/\n```\n")
     md.append("Needs `gstreamer1.0-opencv` (cvtracker) and `opencv-doc` (the clip); "
               "`./run bench` installs them. Raw numbers: "
