@@ -1,5 +1,6 @@
 #include "estimator.hpp"
 
+#include "gap_tolerant_filling.hpp"
 #include "grid_filling.hpp"
 #include "inner_point.hpp"
 #include "iterative_ray_casting.hpp"
@@ -88,6 +89,8 @@ std::unique_ptr<Estimator> make_estimator(Method m) {
       return std::make_unique<PixelFilling>();
     case Method::GridFilling:
       return std::make_unique<GridFilling>();
+    case Method::GapTolerantFilling:
+      return std::make_unique<GapTolerantFilling>();
   }
   return nullptr;
 }

@@ -16,6 +16,8 @@ std::string_view method_name(Method m) {
       return "pixel-filling";
     case Method::GridFilling:
       return "grid-filling";
+    case Method::GapTolerantFilling:
+      return "gap-tolerant-filling";
   }
   return "unknown";
 }
@@ -27,6 +29,8 @@ std::optional<Method> method_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-bool is_ray_method(Method m) { return m != Method::PixelFilling && m != Method::GridFilling; }
+bool is_ray_method(Method m) {
+  return m != Method::PixelFilling && m != Method::GridFilling && m != Method::GapTolerantFilling;
+}
 
 }  // namespace projtrack

@@ -1,4 +1,4 @@
-// The six estimators of the paper, by name.
+// The estimators: the paper's six and our gap-tolerant filling, by name.
 #pragma once
 
 #include <optional>
@@ -13,12 +13,14 @@ enum class Method {
   RasterizedRayCasting,  // iterative n^y-ray-casting with m-rasterization
   PixelFilling,          // pixel-filling
   GridFilling,           // m-grid-filling (the paper's proposal)
+  GapTolerantFilling,    // m-grid-filling whose lines do not squeeze through contour gaps (ours)
 };
 
-inline constexpr int kMethodCount = 6;
+inline constexpr int kMethodCount = 7;
 inline constexpr Method kAllMethods[kMethodCount] = {
     Method::RayCasting,           Method::IterativeRayCasting, Method::RecursiveRayCasting,
-    Method::RasterizedRayCasting, Method::PixelFilling,        Method::GridFilling};
+    Method::RasterizedRayCasting, Method::PixelFilling,        Method::GridFilling,
+    Method::GapTolerantFilling};
 
 // The short name used everywhere outside the code: GStreamer enum nicks, CSV columns, docs. The
 // view is of a string literal, so data() is null-terminated (usable as a C string).

@@ -1,0 +1,236 @@
+#include "gap_tolerant_filling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "vector_clones.hpp"
+
+namespace projtrack {
+
+namespace {
+
+constexpr std::uint8_t kAlongRow = 1, kAlongColumn = 2;
+
+// The first coordinate >= from on the grid of period m through `anchor`.
+int first_on_grid(int from, int anchor, int m) {
+  const int phase = ((anchor - from) % m + m) % m;
+  return from + phase;
+}
+
+}  // namespace
+
+// How far a grid line runs from the free pixel `start`: [first, last] along the line.
+// Horizontal lines are rows (position = x), vertical lines columns (position = y).
+namespace {
+
+// High bit of every non-zero byte of v set, every other bit clear.
+inline std::uint64_t nonzero_bytes(std::uint64_t v) {
+  constexpr std::uint64_t kLow7 = 0x7F7F7F7F7F7F7F7Full;
+  return (((v & kLow7) + kLow7) | v) & ~kLow7;
+}
+
+// near[i] = off wherever the row has an edge: one pass of a row beside a horizontal line.
+PROJTRACK_VECTOR_CLONES void mark_near(const std::uint8_t* __restrict__ row,
+                                       std::uint8_t* __restrict__ near, int n, std::uint8_t off) {
+  for (int i = 0; i < n; ++i) near[i] = row[i] ? off : near[i];
+}
+
+inline std::uint64_t load8(const std::uint8_t* p) {
+  std::uint64_t v;
+  std::memcpy(&v, p, 8);
+  return v;
+}
+
+}  // namespace
+
+GapTolerantFilling::Span GapTolerantFilling::walk(const ImageView& edges, bool vertical, int at,
+                                                  int start, int gap, Work& work) {
+  const int length = vertical ? edges.height : edges.width;
+  const int across = vertical ? edges.width : edges.height;
+  const std::uint8_t bit = vertical ? kAlongColumn : kAlongRow;
+  auto blocked = [&](int i) {
+    const int x = vertical ? at : i, y = vertical ? i : at;
+    return edges.row(y)[x] || (reached_.row(y)[x] & bit);
+  };
+  // 1. The plain grid run: up to an edge, the border or pixels this line already reached.
+  int a = start, b = start;
+  while (a > 0 && !blocked(a - 1)) --a;
+  while (b < length - 1 && !blocked(b + 1)) ++b;
+  work.pixels += b - a + 3;
+
+  // 2. For every position of the run, the offset across the line of the nearest edge pixel on
+  // each side within reach = gap + 1 px, or none (gap + 2).
+  const int reach = gap + 1, none = gap + 2;
+  const int n = b - a + 1;
+  near1_.assign(n, static_cast<std::uint8_t>(none));
+  near2_.assign(n, static_cast<std::uint8_t>(none));
+  if (!vertical) {  // rows above and below: long contiguous passes the compiler vectorises
+    for (int t = reach; t >= 1; --t) {  // the nearest last, so it wins
+      const auto off = static_cast<std::uint8_t>(t);
+      if (at - t >= 0) mark_near(edges.row(at - t) + a, near1_.data(), n, off);
+      if (at + t < across) mark_near(edges.row(at + t) + a, near2_.data(), n, off);
+    }
+  } else {  // the pixels left and right in each row: 16 bytes a side, two words at a time
+    const bool words = at - 16 >= 0 && at + 17 <= across;
+    for (int i = 0; i < n; ++i) {
+      const std::uint8_t* e = edges.row(a + i);
+      int d1 = none, d2 = none;
+      if (words) {
+        const std::uint64_t l0 = nonzero_bytes(load8(e + at - 8));
+        const std::uint64_t l1 = nonzero_bytes(load8(e + at - 16));
+        const std::uint64_t r0 = nonzero_bytes(load8(e + at + 1));
+        const std::uint64_t r1 = nonzero_bytes(load8(e + at + 9));
+        // Little-endian words: the byte nearest the line is the highest on the left, the lowest
+        // on the right.
+        if (l0)
+          d1 = __builtin_clzll(l0) / 8 + 1;
+        else if (l1)
+          d1 = __builtin_clzll(l1) / 8 + 9;
+        if (r0)
+          d2 = __builtin_ctzll(r0) / 8 + 1;
+        else if (r1)
+          d2 = __builtin_ctzll(r1) / 8 + 9;
+      } else {
+        for (int t = 1; t <= reach && d1 == none; ++t)
+          if (at - t >= 0 && e[at - t]) d1 = t;
+        for (int t = 1; t <= reach && d2 == none; ++t)
+          if (at + t < across && e[at + t]) d2 = t;
+      }
+      near1_[i] = static_cast<std::uint8_t>(d1 <= reach ? d1 : none);
+      near2_[i] = static_cast<std::uint8_t>(d2 <= reach ? d2 : none);
+    }
+  }
+  work.pixels += static_cast<std::uint64_t>(n) * 2 * reach;
+
+  // 3. A contour ends at a pixel whose edge neighbours, going round it, form one arc or none (a
+  // pixel inside a contour has neighbours on two sides). Decided lazily, once per pixel: only
+  // where edges lie on both sides of the line are the ends looked at.
+  auto ends_contour = [&](int x, int y) {
+    static constexpr int kRing[8][2] = {{0, -1}, {1, -1}, {1, 0},  {1, 1},
+                                        {0, 1},  {-1, 1}, {-1, 0}, {-1, -1}};
+    bool on[8];
+    for (int k = 0; k < 8; ++k) {
+      const int nx = x + kRing[k][0], ny = y + kRing[k][1];
+      on[k] = nx >= 0 && ny >= 0 && nx < edges.width && ny < edges.height && edges.row(ny)[nx];
+    }
+    int arcs = 0;
+    for (int k = 0; k < 8; ++k) arcs += on[k] && !on[(k + 7) % 8];
+    work.pixels += 8;
+    return arcs <= 1;
+  };
+  constexpr std::uint8_t kUnknown = 0;
+  end1_.assign(n, kUnknown);
+  end2_.assign(n, kUnknown);
+  auto end_offset = [&](std::vector<std::uint8_t>& near, std::vector<std::uint8_t>& ends, int j,
+                        int side) -> int {
+    if (near[j] == none) return none;
+    if (ends[j] == kUnknown) {
+      const int o = side * near[j];
+      const bool e = vertical ? ends_contour(at + o, a + j) : ends_contour(a + j, at + o);
+      ends[j] = static_cast<std::uint8_t>(e ? near[j] : none);
+    }
+    return ends[j];
+  };
+
+  // 4. From the start outwards, up to the first position where the line passes between contour
+  // ends on its two sides (within w = reach px along it, the run's own positions only) no farther
+  // apart across it than a break of `gap` px. The sides of a narrow part are unbroken, and a
+  // corner's second side lies beyond the run's end, so neither stops a line.
+  const int w = reach;
+  auto crossing = [&](int i) {
+    const int j0 = std::max(0, i - w), j1 = std::min(n - 1, i + w);
+    int m1 = none, m2 = none;
+    for (int j = j0; j <= j1; ++j) m1 = std::min(m1, end_offset(near1_, end1_, j, -1));
+    if (m1 == none) return false;
+    for (int j = j0; j <= j1; ++j) m2 = std::min(m2, end_offset(near2_, end2_, j, +1));
+    return m1 + m2 <= reach;
+  };
+  // Walks from the start in direction d; counts of positions with an edge on each side in the
+  // window make the common case (edges on one side or none) one comparison.
+  auto extend = [&](int d) {
+    const int s = start - a, last = d > 0 ? n - 1 : 0;
+    int c1 = 0, c2 = 0;
+    auto count = [&](int j, int sign) {
+      if (j < 0 || j >= n) return;
+      c1 += sign * (near1_[j] != none);
+      c2 += sign * (near2_[j] != none);
+    };
+    for (int j = s - w; j <= s + w; ++j) count(j, +1);
+    for (int i = s; i != last; i += d) {
+      const int next = i + d;
+      count(next + d * w, +1);
+      count(next - d * (w + 1), -1);
+      if (c1 > 0 && c2 > 0 && crossing(next)) return a + i;
+    }
+    return a + last;
+  };
+  return {extend(-1), extend(+1)};
+}
+
+void GapTolerantFilling::run(const Context& ctx, Features& out, Work& work) {
+  const ImageView& edges = ctx.edges;
+  const int width = edges.width, height = edges.height, m = ctx.params.grid_size;
+  const int gap = ctx.params.max_gap;
+  const Point2i seed = out.seed;
+  reached_.ensure(width, height);
+  pending_.clear();
+  pending_.push_back({seed, false});
+  pending_.push_back({seed, true});
+  std::uint64_t count = 0, sum_x = 0, sum_y = 0;
+  BoundsAccumulator bounds;
+  const double cell = static_cast<double>(m) * m / (2.0 * m - 1.0);
+  const double limit = ctx.params.area_limit > 0 ? ctx.params.area_limit : HUGE_VAL;
+
+  while (!pending_.empty() && static_cast<double>(count) * cell <= limit) {
+    const Pending item = pending_.back();
+    pending_.pop_back();
+    const int x = item.p.x, y = item.p.y;
+    ++work.pixels;
+    if (!item.vertical) {
+      std::uint8_t* r = reached_.row(y);
+      if (edges.row(y)[x] || (r[x] & kAlongRow)) continue;
+      const Span s = walk(edges, false, y, x, gap, work);
+      for (int i = s.first; i <= s.last; ++i) {
+        if (!r[i]) {
+          ++count;
+          sum_x += i;
+          sum_y += y;
+        }
+        r[i] |= kAlongRow;
+      }
+      bounds.add_run(s.first, s.last, y);
+      if (ctx.trace) ctx.trace->runs.push_back({{s.first, y}, {s.last, y}});
+      for (int gx = first_on_grid(s.first, seed.x, m); gx <= s.last; gx += m) {
+        if (!(r[gx] & kAlongColumn)) pending_.push_back({{gx, y}, true});
+      }
+    } else {
+      if (edges.row(y)[x] || (reached_.row(y)[x] & kAlongColumn)) continue;
+      const Span s = walk(edges, true, x, y, gap, work);
+      for (int i = s.first; i <= s.last; ++i) {
+        std::uint8_t& c = reached_.row(i)[x];
+        if (!c) {
+          ++count;
+          sum_x += x;
+          sum_y += i;
+        }
+        c |= kAlongColumn;
+      }
+      bounds.add(x, s.first);
+      bounds.add(x, s.last);
+      if (ctx.trace) ctx.trace->runs.push_back({{x, s.first}, {x, s.last}});
+      for (int gy = first_on_grid(s.first, seed.y, m); gy <= s.last; gy += m) {
+        if (!(reached_.row(gy)[x] & kAlongRow)) pending_.push_back({{x, gy}, false});
+      }
+    }
+  }
+
+  out.area = std::min(static_cast<double>(count) * cell, static_cast<double>(width) * height);
+  out.centroid = {static_cast<double>(sum_x) / count, static_cast<double>(sum_y) / count};
+  out.bbox = bounds.rect();
+  out.iterations = 1;
+  if (ctx.trace) ctx.trace->iterations.push_back({seed, out.centroid, out.area});
+  reached_.clear(out.bbox);
+}
+
+}  // namespace projtrack
