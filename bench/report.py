@@ -22,7 +22,20 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 METHODS = ['ray-casting', 'iterative-ray-casting', 'recursive-ray-casting',
-           'rasterized-ray-casting', 'pixel-filling', 'grid-filling']
+           'rasterized-ray-casting', 'pixel-filling', 'grid-filling', 'gap-tolerant-filling']
+PAPER_METHODS = METHODS[:6]
+OURS = 'gap-tolerant-filling'
+# Parameters whose default is held away from the sweep's accuracy-only choice, and why.
+HELD = {'grid_size': 'speed: the element runs the default method on every frame and its cost '
+                     'grows as 1/m; at 16 the element keeps the speed targets of '
+                     'docs/performance.md, while the finest grid wins on accuracy alone. '
+                     'Set `grid-size=8` (or finer) for accuracy on small, clean objects',
+        'max_gap': 'robustness: the sweep\'s scenes have at most 5 % of the contour missing, '
+                   'but at 10 % neighbouring gaps merge into breaks of 4–9 px, and a smaller '
+                   'max gap leaks through them (with 6, the section above measured leak rates '
+                   'of 43 % on the sphere and 91 % on the hand at 10 % gaps; with 12, none). '
+                   'What a larger max gap costs is accuracy where spurious strokes end near a '
+                   'line inside the object'}
 RAY_METHODS = METHODS[:4]
 ITERATIVE = METHODS[1:4]
 PEERS = ['opencv-floodfill', 'opencv-components']
@@ -352,12 +365,81 @@ class Report:
                             for res in self.resolutions) + ' (median per call).'))
         return v
 
+    def ours_verdicts(self):
+        """Issue 8's targets for gap-tolerant filling, computed from the runs."""
+        if not select(self.runs, method=OURS):
+            return []
+        others = [m for m in RAY_METHODS + ['grid-filling'] if select(self.runs, method=m)]
+        gaps = [g for g in self.rates if g > 0]
+        v = []
+        worse = []
+        for obj in ['sphere', 'hand']:
+            for g in gaps:
+                ours = select(self.runs, object=obj, method=OURS, gap_rate=g, spurious=0.0)
+                for m in others:
+                    theirs = select(self.runs, object=obj, method=m, gap_rate=g, spurious=0.0)
+                    if leak_rate(ours) > leak_rate(theirs):
+                        worse.append(f'{obj} {pct(g, 0)} leak rate vs {m} '
+                                     f'({pct(leak_rate(ours), 0)} > {pct(leak_rate(theirs), 0)})')
+                    if abs_area_error(ours) > abs_area_error(theirs):
+                        worse.append(f'{obj} {pct(g, 0)} area error vs {m} '
+                                     f'({pct(abs_area_error(ours))} > {pct(abs_area_error(theirs))})')
+        leaks = ', '.join(f'{obj} {pct(leak_rate(select(self.runs, object=obj, method=OURS, spurious=0.0, gap_rate=g)), 0)}'
+                          for obj in ['sphere', 'hand'] for g in gaps[-1:])
+        v.append(('G1', 'at gap rates 1–10 %, leak rate and area error no higher than grid-filling\'s '
+                  'and every ray method\'s, on both objects',
+                  'holds' if not worse else 'fails',
+                  ('no case where another is better' if not worse else '; '.join(worse[:6])
+                   + (f' (and {len(worse) - 6} more)' if len(worse) > 6 else ''))
+                  + f'; leak rate at {pct(gaps[-1], 0)} gaps: {leaks}'))
+        far = []
+        cells = []
+        for obj in ['sphere', 'hand']:
+            for res in self.resolutions:
+                a = abs_area_error(self.clean(object=obj, method=OURS, resolution=res))
+                b = abs_area_error(self.clean(object=obj, method='pixel-filling', resolution=res))
+                cells.append(f'{obj} {res}: {pct(a)} vs {pct(b)}')
+                if abs(a - b) > 0.01:
+                    far.append(obj + ' ' + res)
+        v.append(('G2', 'on closed contours, area error within 1 % of pixel-filling\'s',
+                  'holds' if not far else 'fails', '; '.join(cells)))
+        res = self.resolutions[-1]
+        t, g = self.time(OURS, res), self.time('grid-filling', res)
+        v.append(('G3', f'cost at most 2× grid-filling\'s at {res}', 'holds' if t <= 2 * g else 'fails',
+                  f'median {num(t, 0)} µs vs {num(g, 0)} µs: {num(t / g, 2)}× on closed contours; '
+                  f'with gaps (where grid-filling leaks and walks the frame) '
+                  + ', '.join(f'{pct(gr, 0)}: {num(med([r["time_us"] for r in select(self.runs, method=OURS, resolution=res, gap_rate=gr, spurious=0.0)]), 0)} vs '
+                              f'{num(med([r["time_us"] for r in select(self.runs, method="grid-filling", resolution=res, gap_rate=gr, spurious=0.0)]), 0)} µs'
+                              for gr in gaps)))
+        return v
+
+    def ours_section(self):
+        v = self.ours_verdicts()
+        if not v:
+            return
+        w = self.w
+        w()
+        w('## Beyond the paper: gap-tolerant filling')
+        w()
+        w('The paper\'s open problem is edge miscalculation. `gap-tolerant-filling` is our answer '
+          '(docs/gap_tolerant_filling.md): the m-grid fill, except that a grid line stops before '
+          'passing between two contour ends no farther apart than `max_gap` px. It runs in the '
+          'tables above beside the paper\'s six, at the same parameters (grid size '
+          f'{self.meta["params"]["grid_size"]}, max gap {self.meta["params"].get("max_gap", "?")}). '
+          'Its targets, computed from the same runs:')
+        w()
+        w('| target | verdict | the numbers |')
+        w('|---|---|---|')
+        for cid, text, verdict, detail in v:
+            w(f'| {cid}: {text} | **{verdict}** | {detail} |')
+
     def choose_defaults(self):
         """Per parameter: the value with the lowest error score over the methods it affects;
         a cheaper value whose score is within 2 % of the best wins the tie. Cheaper means fewer
         pixels visited (median): a count, so the choice does not depend on a noisy clock."""
         choice = {}
-        for p in ['grid_size', 'block_size', 'rays', 'recursion', 'max_iterations', 'convergence']:
+        for p in ['grid_size', 'max_gap', 'block_size', 'rays', 'recursion', 'max_iterations',
+                  'convergence']:
             rows = select(self.sweep, parameter=p)
             if not rows:
                 continue
@@ -425,8 +507,8 @@ class Report:
         m = self.meta
         self.plot_gaps()
         self.plot_time()
-        params = [p for p in ['grid_size', 'block_size', 'rays', 'recursion', 'max_iterations',
-                              'convergence'] if select(self.sweep, parameter=p)]
+        params = [p for p in ['grid_size', 'max_gap', 'block_size', 'rays', 'recursion',
+                              'max_iterations', 'convergence'] if select(self.sweep, parameter=p)]
         if params:
             self.plot_sweep(params)
         fig_rel = os.path.relpath(os.path.join(self.dir, 'figures'), os.path.dirname(path))
@@ -521,6 +603,7 @@ class Report:
               'rays.')
             w()
             self.spurious_table()
+        self.ours_section()
         w()
         w('## Time')
         w()
@@ -556,7 +639,7 @@ class Report:
                                        key=METHODS.index))
             cells = '; '.join(f'{v:g}: {s:.3f}, {px:.0f}, {t:.0f}' for v, (s, t, px) in stats.items())
             cur = current.get(p)
-            if cur is not None and abs(float(cur) - pick) > 1e-9:
+            if cur is not None and abs(float(cur) - pick) > 1e-9 and p not in HELD:
                 mismatches.append(p)
             rows_p = select(self.sweep, parameter=p)
             clean = {v: score(select(rows_p, value=v, gap_rate=0.0, spurious=0.0))
@@ -577,6 +660,11 @@ class Report:
              'best may lie beyond it. ' if edge else '')
           + 'Each cell rests on 12 inner points in each of 24 scenes.')
         w()
+        for p, why in HELD.items():
+            if p in choice and abs(float(current.get(p, choice[p][0])) - choice[p][0]) > 1e-9:
+                w(f'`{p}` is held at {current.get(p):g} rather than the chosen '
+                  f'{choice[p][0]:g}, for {why}.')
+                w()
         if mismatches:
             w(f'**The defaults in use differ from the chosen values for: {", ".join(mismatches)}** '
               '— update `src/params.hpp` and run `./run bench` again.')
@@ -597,7 +685,7 @@ class Report:
           'iteration.')
         for meth in METHODS:
             w()
-            w(f'**{meth}**')
+            w(f'**{meth}**' + (' (ours, beyond the paper)' if meth == OURS else ''))
             w()
             for obj in ['sphere', 'hand']:
                 w(f'![{meth} on the {obj}]({fig_rel}/{meth}-{obj}.png)')

@@ -183,8 +183,9 @@ std::string projtrack_launch(const std::string& method, const Clip& c) {
 
 const char* kMethods[] = {"ray-casting",           "iterative-ray-casting",
                           "recursive-ray-casting", "rasterized-ray-casting",
-                          "pixel-filling",         "grid-filling"};
-const char* kDefaultMethod = "grid-filling";
+                          "pixel-filling",         "grid-filling",
+                          "gap-tolerant-filling"};
+std::string kDefaultMethod;  // the element's own default, read from its property
 
 std::FILE* csv = nullptr;
 
@@ -477,6 +478,15 @@ int main(int argc, char** argv) {
     return 1;
   }
   gst_object_unref(f);
+  {
+    GstElement* e = gst_element_factory_make("projtrack", nullptr);
+    GParamSpec* spec = g_object_class_find_property(G_OBJECT_GET_CLASS(e), "method");
+    const GValue* def = g_param_spec_get_default_value(spec);
+    GEnumValue* v = g_enum_get_value(G_PARAM_SPEC_ENUM(spec)->enum_class, g_value_get_enum(def));
+    kDefaultMethod = v->value_nick;
+    gst_object_unref(e);
+    row("meta", nullptr, "default method", kDefaultMethod, 1);
+  }
   GstElementFactory* cvt = gst_element_factory_find("cvtracker");
   const bool have_cvtracker = cvt != nullptr;
   if (cvt)

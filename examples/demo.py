@@ -85,7 +85,7 @@ def main():
     ap.add_argument('--frames', type=int, default=300)
     ap.add_argument('--width', type=int, default=640)
     ap.add_argument('--height', type=int, default=480)
-    ap.add_argument('--method', default='grid-filling')
+    ap.add_argument('--method', default='gap-tolerant-filling')
     ap.add_argument('--extra', default='', help='more projtrack properties, e.g. "grid-size=12"')
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)

@@ -4,9 +4,10 @@
  *
  * Tracks one object in video from its edges and one point inside it (the *inner point*), with the
  * estimators of Quesada & León, "Filling-Based Techniques Applied to Object Projection Feature
- * Estimation": on every buffer it computes the edge image, runs the chosen estimator from the
- * inner point and reports the object's centroid, area (px²) and bounding box, then moves the
- * inner point for the next frame.
+ * Estimation", or with ours beyond the paper, gap-tolerant filling (the default: a grid fill whose
+ * lines do not cross breaks in the contour): on every buffer it computes the edge image, runs the
+ * chosen estimator from the inner point and reports the object's centroid, area (px²) and
+ * bounding box, then moves the inner point for the next frame.
  *
  * While tracking, every buffer carries a #GstVideoRegionOfInterestMeta of type `object` (the
  * bounding box) with a `projtrack` parameter structure holding the features, and the element
@@ -72,7 +73,7 @@ using projtrack::TrackResult;
 
 namespace {
 
-constexpr Method kDefaultMethod = Method::GridFilling;
+constexpr Method kDefaultMethod = Method::GapTolerantFilling;
 constexpr EdgeDetector kDefaultEdgeDetector = EdgeDetector::Canny;
 constexpr double kMaxGradientThreshold = 10000.0;
 
@@ -118,6 +119,7 @@ enum {
   PROP_RECURSION,
   PROP_BLOCK_SIZE,
   PROP_GRID_SIZE,
+  PROP_MAX_GAP,
   PROP_MAX_ITERATIONS,
   PROP_CONVERGENCE,
   PROP_EDGE_DETECTOR,
@@ -164,6 +166,10 @@ GType gst_projtrack_method_get_type(void) {
        "Pixel-filling: flood fill up to the edges (exact; leaks through gaps)", "pixel-filling"},
       {static_cast<gint>(Method::GridFilling),
        "m-grid-filling: fill along a grid of m×m cells (the paper's proposal)", "grid-filling"},
+      {static_cast<gint>(Method::GapTolerantFilling),
+       "Gap-tolerant filling: m-grid-filling whose lines do not cross gaps of up to max-gap px in "
+       "the contour",
+       "gap-tolerant-filling"},
       {0, nullptr, nullptr}};
   if (g_once_init_enter(&type)) {
     g_once_init_leave(&type, g_enum_register_static("GstProjtrackMethod", values));
@@ -224,6 +230,9 @@ static void gst_projtrack_set_property(GObject* object, guint prop_id, const GVa
       break;
     case PROP_GRID_SIZE:
       s.params.grid_size = static_cast<int>(g_value_get_uint(value));
+      break;
+    case PROP_MAX_GAP:
+      s.params.max_gap = static_cast<int>(g_value_get_uint(value));
       break;
     case PROP_MAX_ITERATIONS:
       s.params.max_iterations = static_cast<int>(g_value_get_uint(value));
@@ -304,6 +313,9 @@ static void gst_projtrack_get_property(GObject* object, guint prop_id, GValue* v
       break;
     case PROP_GRID_SIZE:
       g_value_set_uint(value, s.params.grid_size);
+      break;
+    case PROP_MAX_GAP:
+      g_value_set_uint(value, s.params.max_gap);
       break;
     case PROP_MAX_ITERATIONS:
       g_value_set_uint(value, s.params.max_iterations);
@@ -627,6 +639,11 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   properties[PROP_GRID_SIZE] =
       g_param_spec_uint("grid-size", "Grid size", "m of m-grid-filling: grid cell size in pixels",
                         1, projtrack::kMaxCellSize, p.grid_size, flags);
+  properties[PROP_MAX_GAP] = g_param_spec_uint(
+      "max-gap", "Max gap",
+      "gap-tolerant-filling: the longest break in a contour, in pixels, that its grid lines will "
+      "not cross",
+      1, projtrack::kMaxGap, p.max_gap, flags);
   properties[PROP_MAX_ITERATIONS] = g_param_spec_uint(
       "max-iterations", "Max iterations", "Iteration cap of the iterative ray methods", 1,
       projtrack::kMaxIterations, p.max_iterations, flags);
@@ -693,7 +710,7 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   gst_element_class_set_static_metadata(
       element_class, "Object projection feature tracker", "Filter/Analyzer/Video",
       "Tracks an object from its edges and one inner point: centroid, area and bounding box on "
-      "every frame (ray-casting, pixel-filling and grid-filling estimators)",
+      "every frame (ray-casting, filling and gap-tolerant filling estimators)",
       "projtrack developers");
   gst_element_class_add_static_pad_template(element_class, &sink_template);
   gst_element_class_add_static_pad_template(element_class, &src_template);

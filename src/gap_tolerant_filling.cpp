@@ -63,6 +63,14 @@ GapTolerantFilling::Span GapTolerantFilling::walk(const ImageView& edges, bool v
   // each side within reach = gap + 1 px, or none (gap + 2).
   const int reach = gap + 1, none = gap + 2;
   const int n = b - a + 1;
+  // Everything read: the run and the band beside it, one pixel more for the contour-end test.
+  if (vertical) {
+    work.reach.add(at - reach - 1, a - 1);
+    work.reach.add(at + reach + 1, b + 1);
+  } else {
+    work.reach.add(a - 1, at - reach - 1);
+    work.reach.add(b + 1, at + reach + 1);
+  }
   near1_.assign(n, static_cast<std::uint8_t>(none));
   near2_.assign(n, static_cast<std::uint8_t>(none));
   if (!vertical) {  // rows above and below: long contiguous passes the compiler vectorises
@@ -103,10 +111,13 @@ GapTolerantFilling::Span GapTolerantFilling::walk(const ImageView& edges, bool v
   }
   work.pixels += static_cast<std::uint64_t>(n) * 2 * reach;
 
-  // 3. A contour ends at a pixel whose edge neighbours, going round it, form one arc or none (a
-  // pixel inside a contour has neighbours on two sides). Decided lazily, once per pixel: only
-  // where edges lie on both sides of the line are the ends looked at.
-  auto ends_contour = [&](int x, int y) {
+  // 3. Which of those nearest edges end a contour: what a break leaves behind. The sides of a
+  // narrow part of the object are unbroken, so lines pass between them.
+  // The kind of edge pixel at (x, y): a contour's end (its edge neighbours, going round it, form
+  // one arc of at most three pixels, a quarter turn), a speck (no neighbours), or part of a
+  // contour (neighbours on two sides, or along half the ring: the side of a thick line).
+  enum class Kind { End, Speck, Contour };
+  auto kind = [&](int x, int y) {
     static constexpr int kRing[8][2] = {{0, -1}, {1, -1}, {1, 0},  {1, 1},
                                         {0, 1},  {-1, 1}, {-1, 0}, {-1, -1}};
     bool on[8];
@@ -114,21 +125,37 @@ GapTolerantFilling::Span GapTolerantFilling::walk(const ImageView& edges, bool v
       const int nx = x + kRing[k][0], ny = y + kRing[k][1];
       on[k] = nx >= 0 && ny >= 0 && nx < edges.width && ny < edges.height && edges.row(ny)[nx];
     }
-    int arcs = 0;
-    for (int k = 0; k < 8; ++k) arcs += on[k] && !on[(k + 7) % 8];
+    int arcs = 0, count = 0;
+    for (int k = 0; k < 8; ++k) {
+      arcs += on[k] && !on[(k + 7) % 8];
+      count += on[k];
+    }
     work.pixels += 8;
-    return arcs <= 1;
+    if (count == 0) return Kind::Speck;
+    return arcs == 1 && count <= 3 ? Kind::End : Kind::Contour;
   };
   constexpr std::uint8_t kUnknown = 0;
   end1_.assign(n, kUnknown);
   end2_.assign(n, kUnknown);
+  // The offset of the contour end nearest the line at position j on one side (-1 or +1), or
+  // none: decided lazily, once per position, only where edges lie on both sides of the line.
+  // Specks (sensor noise, one pixel) neither count nor hide what lies behind them; a contour
+  // does hide: the end of another contour beyond it is not this line's business.
   auto end_offset = [&](std::vector<std::uint8_t>& near, std::vector<std::uint8_t>& ends, int j,
                         int side) -> int {
     if (near[j] == none) return none;
     if (ends[j] == kUnknown) {
-      const int o = side * near[j];
-      const bool e = vertical ? ends_contour(at + o, a + j) : ends_contour(a + j, at + o);
-      ends[j] = static_cast<std::uint8_t>(e ? near[j] : none);
+      int found = none;
+      for (int t = near[j]; t <= reach; ++t) {
+        const int o = side * t;
+        const int x = vertical ? at + o : a + j, y = vertical ? a + j : at + o;
+        if (x < 0 || y < 0 || x >= edges.width || y >= edges.height || !edges.row(y)[x]) continue;
+        const Kind k = kind(x, y);
+        if (k == Kind::Speck) continue;
+        if (k == Kind::End) found = t;
+        break;
+      }
+      ends[j] = static_cast<std::uint8_t>(found);
     }
     return ends[j];
   };

@@ -17,7 +17,7 @@ struct Params {
   int max_iterations = 3;    // cap for the iterative methods                     [1, 1000]
   double convergence = 4.0;  // stop iterating when inner point and centroid move less, px [0, 1e6]
   int seed_radius = 4;       // how far to look for a free pixel around the inner point, px [0, 64]
-  int max_gap = 3;  // gap-tolerant filling: longest contour gap it will not cross, px [1, 15]
+  int max_gap = 12;  // gap-tolerant filling: longest contour gap it will not cross, px [1, 15]
   // The fills (pixel-, grid- and gap-tolerant filling) stop once their area passes this, px² (0 =
   // never). A tracker sets it just above what it would refuse anyway, so a leak costs about the
   // object's size instead of the frame's. A stopped estimate has area > area_limit, and its

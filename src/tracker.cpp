@@ -242,6 +242,8 @@ Features Tracker::estimate_around(EdgeSource& edges, Method m, const Params& par
     const Rect ahead{b.x + static_cast<int>(std::lround(velocity_.x)),
                      b.y + static_cast<int>(std::lround(velocity_.y)), b.width, b.height};
     margin = std::max(16, static_cast<int>(tp.edge_margin * std::max(b.width, b.height)));
+    // Gap-tolerant filling reads a band of max_gap + 2 px beside its lines, beyond the box.
+    if (m == Method::GapTolerantFilling) margin += params.max_gap + 2;
     const Rect r = grown(united(b, ahead), margin, params.block_size, frame);
     if (holds(r, *inner_)) region = r;
   }

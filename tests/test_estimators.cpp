@@ -248,6 +248,67 @@ TEST(Leaks, AnAreaLimitStopsALeakingFillEarly) {
   }
 }
 
+// Ours, beyond the paper. On closed contours there are no contour ends, so no line stops early:
+// the answers are grid-filling's exactly, narrow parts included (the hand's fingers are 8 px
+// apart; the bar below is 3 px wide, narrower than max_gap).
+TEST(GapTolerantFilling, OnClosedContoursItIsGridFilling) {
+  std::vector<Scene> scenes = test::all_scenes();
+  cv::Mat bar(180, 200, CV_8U, cv::Scalar(0));
+  cv::circle(bar, {80, 90}, 40, cv::Scalar(255), cv::FILLED);
+  bar(cv::Rect(118, 88, 60, 3)).setTo(255);
+  scenes.push_back(test::scene_from_mask("disc with a 3 px bar", bar));
+  auto grid = make_estimator(Method::GridFilling);
+  auto ours = make_estimator(Method::GapTolerantFilling);
+  for (int m : {4, 8}) {
+    Params p = paper_params();
+    p.grid_size = m;
+    for (const Scene& s : scenes) {
+      for (Point2i seed : test::interior_points(s, 9)) {
+        const Features a = grid->estimate(s.edge_view(), seed, p);
+        const Features b = ours->estimate(s.edge_view(), seed, p);
+        ASSERT_EQ(a.area, b.area) << s.name << " from " << seed.x << ", " << seed.y;
+        ASSERT_EQ(a.centroid.x, b.centroid.x) << s.name;
+        ASSERT_EQ(a.centroid.y, b.centroid.y) << s.name;
+      }
+    }
+  }
+}
+
+// A gap on the seed's own grid row sends grid-filling out of the object; ours stops there.
+TEST(GapTolerantFilling, HoldsWhereGridFillingLeaksThroughAGap) {
+  const Params p = paper_params();
+  auto grid = make_estimator(Method::GridFilling);
+  auto ours = make_estimator(Method::GapTolerantFilling);
+  for (Scene s : test::all_scenes()) {
+    const Point2i inside = rightmost_interior(s, round_to_pixel(s.centroid).y + 1);
+    test::open_gap_right(s, inside.x, inside.y);
+    ASSERT_GE(grid->estimate(s.edge_view(), inside, p).area, 3 * s.area) << s.name;
+    const Features f = ours->estimate(s.edge_view(), inside, p);
+    ASSERT_TRUE(f.valid()) << s.name;
+    EXPECT_NEAR(f.area / s.area, 1.0, 0.10) << s.name;
+    EXPECT_LT(distance(f.centroid, s.centroid), 0.05 * std::sqrt(s.area)) << s.name;
+  }
+}
+
+// Its limit, by design: a break longer than max_gap is an opening, not a gap.
+TEST(GapTolerantFilling, ABreakLongerThanMaxGapIsAnOpening) {
+  Scene s = test::disc_scene();
+  const Point2i c = round_to_pixel(s.centroid);
+  s.edges(cv::Rect(c.x + 30, c.y - 4, 20, 9)).setTo(0);  // a 9 px break on the right
+  Params p = paper_params();
+  auto ours = make_estimator(Method::GapTolerantFilling);
+  p.max_gap = 12;
+  EXPECT_NEAR(ours->estimate(s.edge_view(), c, p).area / s.area, 1.0, 0.10);
+  p.max_gap = 4;
+  const Features leak = ours->estimate(s.edge_view(), c, p);
+  EXPECT_GT(leak.area, 3 * s.area);
+  // The area limit stops it as it stops the other fills.
+  p.area_limit = 2 * s.area;
+  const Features stopped = ours->estimate(s.edge_view(), c, p);
+  EXPECT_GT(stopped.area, p.area_limit);
+  EXPECT_LT(stopped.pixels_visited, leak.pixels_visited);
+}
+
 TEST(Leaks, GridFillingHoldsWhenTheGapFallsBetweenGridLinesAndLeaksOnOne) {
   Params p = paper_params();
   auto grid = make_estimator(Method::GridFilling);

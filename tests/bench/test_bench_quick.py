@@ -18,7 +18,8 @@ subprocess.run([bench, '--quick', '--out', out], check=True, timeout=600)
 runs = list(csv.DictReader(open(os.path.join(out, 'runs.csv'))))
 methods = {r['method'] for r in runs}
 expected = {'ray-casting', 'iterative-ray-casting', 'recursive-ray-casting',
-            'rasterized-ray-casting', 'pixel-filling', 'grid-filling', 'opencv-floodfill',
+            'rasterized-ray-casting', 'pixel-filling', 'grid-filling', 'gap-tolerant-filling',
+            'opencv-floodfill',
             'opencv-components'}
 assert methods == expected, methods
 for r in runs:

@@ -18,7 +18,7 @@ subprocess.run([speed, '--quick', '--out', out], check=True, timeout=600)
 
 rows = list(csv.DictReader(open(os.path.join(out, 'speed.csv'))))
 methods = ['ray-casting', 'iterative-ray-casting', 'recursive-ray-casting',
-           'rasterized-ray-casting', 'pixel-filling', 'grid-filling']
+           'rasterized-ray-casting', 'pixel-filling', 'grid-filling', 'gap-tolerant-filling']
 
 
 def find(section, what, key, res=None, clip='generated'):

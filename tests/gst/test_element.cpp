@@ -164,7 +164,7 @@ TEST_F(Element, MessageAndMetaDescribeTheDrawnScene) {
   const GstStructure* s = gst_message_get_structure(m);
   EXPECT_STREQ(gst_structure_get_name(s), "projtrack");
   EXPECT_EQ(status_of(m), "ok");
-  EXPECT_STREQ(gst_structure_get_string(s, "method"), "grid-filling");
+  EXPECT_STREQ(gst_structure_get_string(s, "method"), "gap-tolerant-filling");  // the default
   const double cx = get_double(s, "centroid-x"), cy = get_double(s, "centroid-y");
   EXPECT_NEAR(cx, 150, 0.5);
   EXPECT_NEAR(cy, 110, 0.5);
@@ -232,8 +232,9 @@ TEST_F(Element, WithoutAnInnerPointNoMetaAndTheMessageSaysWhy) {
 TEST_F(Element, EveryMethodIsSelectable) {
   const DiscFrame scene{200, 160, 100, 80, 35};
   set_caps(scene, "GRAY8");
-  for (const char* method : {"ray-casting", "iterative-ray-casting", "recursive-ray-casting",
-                             "rasterized-ray-casting", "pixel-filling", "grid-filling"}) {
+  for (const char* method :
+       {"ray-casting", "iterative-ray-casting", "recursive-ray-casting", "rasterized-ray-casting",
+        "pixel-filling", "grid-filling", "gap-tolerant-filling"}) {
     gst_util_set_object_arg(G_OBJECT(h_->element), "method", method);
     seed(100, 80);  // the centre: plain ray-casting is biased from anywhere else
     gst_buffer_unref(push(scene.gray8()));

@@ -242,14 +242,15 @@ TEST_F(Matrix, PropertiesChangedFromAnotherThreadWhileBuffersFlow) {
     std::mt19937 rng(4);
     const char* methods[] = {"ray-casting",           "iterative-ray-casting",
                              "recursive-ray-casting", "rasterized-ray-casting",
-                             "pixel-filling",         "grid-filling"};
+                             "pixel-filling",         "grid-filling",
+                             "gap-tolerant-filling"};
     const char* detectors[] = {"canny", "sobel", "input"};
     const char* acquisitions[] = {"manual", "center", "auto"};
     while (!done) {
       GObject* e = G_OBJECT(h_->element);
       switch (rng() % 8) {
         case 0:
-          gst_util_set_object_arg(e, "method", methods[rng() % 6]);
+          gst_util_set_object_arg(e, "method", methods[rng() % 7]);
           break;
         case 1:
           gst_util_set_object_arg(e, "edge-detector", detectors[rng() % 3]);
@@ -258,7 +259,8 @@ TEST_F(Matrix, PropertiesChangedFromAnotherThreadWhileBuffersFlow) {
           gst_util_set_object_arg(e, "acquisition", acquisitions[rng() % 3]);
           break;
         case 3:
-          g_object_set(e, "rays", 3u + rng() % 60, "grid-size", 1u + rng() % 40, nullptr);
+          g_object_set(e, "rays", 3u + rng() % 60, "grid-size", 1u + rng() % 40, "max-gap",
+                       1u + rng() % 15, nullptr);
           break;
         case 4:
           g_object_set(e, "inner-point-x", int(rng() % 200) - 1, "inner-point-y",
