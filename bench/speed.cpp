@@ -427,6 +427,37 @@ double streams_fps(const Clip& clip, int streams, int frames_each) {
   return streams * frames_each / elapsed;
 }
 
+// Not a time: what each method makes of real footage with no ground truth. The tracker (as the
+// element runs it, acquisition=auto) over the real clip: frames tracked, refused as leaks, lost
+// otherwise, and searching.
+void real_clip_statuses(const Clip& clip) {
+  for (Method method : kAllMethods) {
+    Tracker t;
+    TrackerParams tp;
+    int tracked = 0, leaks = 0, lost = 0, searching = 0, acquisitions = 0;
+    for (std::size_t i = 0; i < clip.gray.size(); ++i) {
+      const cv::Mat& g = clip.gray[i];
+      const TrackResult r =
+          t.track(ImageView(g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step)),
+                  EdgeParams{}, static_cast<double>(i) / 30, method, Params{}, tp);
+      acquisitions += r.acquired;
+      if (r.status == Status::Lost) {
+        ++(r.detail.find("leak") != std::string::npos ? leaks : lost);
+      } else if (r.status == Status::Searching) {
+        ++searching;
+      } else if (has_features(r.status)) {
+        ++tracked;
+      }
+    }
+    const std::string m(method_name(method));
+    row("real_statuses", &clip, m, "tracked", tracked);
+    row("real_statuses", &clip, m, "refused_as_leak", leaks);
+    row("real_statuses", &clip, m, "lost_otherwise", lost);
+    row("real_statuses", &clip, m, "searching", searching);
+    row("real_statuses", &clip, m, "acquisitions", acquisitions);
+  }
+}
+
 void write_meta(const std::string& dir) {
   std::ofstream meta(dir + "/meta.json");
   std::string cpu = "unknown";
@@ -502,6 +533,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "projtrack-speed: %dx%d real clip\n", w, h);
     if (auto real = real_clip(clip_path, w, h, quick ? 12 : 270)) {
       compare_with_peers(*real, rounds, batch, have_cvtracker);
+      if (w == 640) real_clip_statuses(*real);
     } else {
       std::fprintf(stderr, "projtrack-speed: cannot read %s (opencv-doc): no real clip\n",
                    clip_path.c_str());

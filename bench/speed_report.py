@@ -226,6 +226,24 @@ def main():
               "still looks at the whole frame. cvtracker's start box there is a centred tenth of "
               "the frame, and the OpenCV peer fills from the frame centre.\n")
 
+    statuses = [r for r in rows if r["section"] == "real_statuses"]
+    if statuses:
+        md.append("## What each method makes of the real clip\n")
+        md.append("Not a time, and no ground truth: the tracker as the element runs it "
+                  "(`acquisition=auto`, every default) over the real clip at 640×480, frame by "
+                  "frame. *Refused as a leak*: an estimate whose area jumped past `leak-factor` "
+                  "× the last one or covered too much of the frame; *lost otherwise*: one that "
+                  "shrank or fell under the minimum; *acquisitions*: tracks started.\n")
+        keys = ["tracked", "refused_as_leak", "lost_otherwise", "searching", "acquisitions"]
+        md.append("| method | " + " | ".join(k.replace("_", " ") for k in keys) + " |")
+        md.append("|---|" + "---|" * len(keys))
+        for m in METHODS:
+            vals = {r["key"]: r["value"] for r in statuses if r["what"] == m}
+            if vals:
+                name = f"**{m}**" if m == DEFAULT else m
+                md.append(f"| {name} | " + " | ".join(f"{vals.get(k, 0):.0f}" for k in keys) + " |")
+        md.append("")
+
     md.append("## Cost against the object's size\n")
     md.append(f"![cost by object size]({rel(fig_path)})\n")
     if size_lines:
