@@ -181,10 +181,9 @@ std::string projtrack_launch(const std::string& method, const Clip& c) {
          " inner-point-y=" + std::to_string(c.seeds[0].y);
 }
 
-const char* kMethods[] = {"ray-casting",           "iterative-ray-casting",
-                          "recursive-ray-casting", "rasterized-ray-casting",
-                          "pixel-filling",         "grid-filling",
-                          "gap-tolerant-filling"};
+const char* kMethods[] = {
+    "ray-casting",   "iterative-ray-casting", "recursive-ray-casting", "rasterized-ray-casting",
+    "pixel-filling", "grid-filling",          "gap-tolerant-filling"};
 std::string kDefaultMethod;  // the element's own default, read from its property
 
 std::FILE* csv = nullptr;

@@ -240,10 +240,9 @@ TEST_F(Matrix, PropertiesChangedFromAnotherThreadWhileBuffersFlow) {
   std::atomic<bool> done{false};
   std::thread poker([&] {
     std::mt19937 rng(4);
-    const char* methods[] = {"ray-casting",           "iterative-ray-casting",
-                             "recursive-ray-casting", "rasterized-ray-casting",
-                             "pixel-filling",         "grid-filling",
-                             "gap-tolerant-filling"};
+    const char* methods[] = {
+        "ray-casting",   "iterative-ray-casting", "recursive-ray-casting", "rasterized-ray-casting",
+        "pixel-filling", "grid-filling",          "gap-tolerant-filling"};
     const char* detectors[] = {"canny", "sobel", "input"};
     const char* acquisitions[] = {"manual", "center", "auto"};
     while (!done) {
