@@ -62,8 +62,12 @@ ImageView CannyDetector::detect(const ImageView& src, double low_threshold, doub
   if (!src.valid()) return {};
   if (low_threshold > high_threshold) std::swap(low_threshold, high_threshold);
   // L1 norms never exceed 8 · 255, so larger thresholds all mean "above every norm".
-  const int low = static_cast<int>(std::floor(std::clamp(low_threshold, -1.0, 4096.0)));
-  const int high = static_cast<int>(std::floor(std::clamp(high_threshold, -1.0, 4096.0)));
+  // Offsets into the map are 32-bit: refuse what would not fit (over 2^31 pixels).
+  if ((static_cast<double>(w) + 2) * (static_cast<double>(h) + 2) > 2147483647.0) return {};
+  auto level = [](double t) {  // NaN and anything below -1 read as -1
+    return t >= -1.0 ? static_cast<int>(std::floor(std::min(t, 4096.0))) : -1;
+  };
+  const int low = level(low_threshold), high = level(high_threshold);
 
   // Gradients live in a ring of three rows (the row being suppressed and its two neighbours), so
   // they stay in cache; only the map is frame-sized. Rows of the ring and of the map have one

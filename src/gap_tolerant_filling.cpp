@@ -123,7 +123,9 @@ GapTolerantFilling::Span GapTolerantFilling::walk(const ImageView& edges, bool v
     bool on[8];
     for (int k = 0; k < 8; ++k) {
       const int nx = x + kRing[k][0], ny = y + kRing[k][1];
-      on[k] = nx >= 0 && ny >= 0 && nx < edges.width && ny < edges.height && edges.row(ny)[nx];
+      // Outside the frame counts as edge: a contour the border cuts does not end there.
+      const bool outside = nx < 0 || ny < 0 || nx >= edges.width || ny >= edges.height;
+      on[k] = outside || edges.row(ny)[nx];
     }
     int arcs = 0, count = 0;
     for (int k = 0; k < 8; ++k) {

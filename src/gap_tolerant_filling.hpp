@@ -12,14 +12,16 @@
 namespace projtrack {
 
 // Grid lines, area and centroid as GridFilling's (count · m² / (2m − 1); the mean of the reached
-// grid pixels). A pixel of a line is narrow when, within a window of g + 1 px along the line
-// (g = max_gap), the nearest edges on its two sides are at most g + 1 px apart across it — the
-// two ends of a break of up to g px in one contour — where two sides of an object part are
-// farther apart. Walking a line, a narrow stretch that ends at an edge, the border or pixels
-// already reached belongs to the object (a corner); one that opens into wide free pixels is a
-// gap, and the line stops where the stretch began.
-// Where it still fails (docs/gap_tolerant_filling.md): gaps longer than max_gap, and parts of
-// the object no wider than max_gap, which a line entering from a wide part treats as a gap.
+// grid pixels). Beside every pixel of a run, on each side, the nearest edge pixel within
+// max_gap + 1 px across the line is found; it counts only if it ends a contour (its edge
+// neighbours form one arc of at most three pixels; outside the frame counts as edge; one-pixel
+// specks are skipped and hide nothing). A run stops before the first pixel, walking out from its
+// start, where contour ends on its two sides within max_gap + 1 px along it are no farther apart
+// across it than a break of max_gap px: about max_gap + 2 px short of the gap. The sides of a
+// narrow part of the object are unbroken contours, so lines pass between them, and on closed
+// contours the answers are GridFilling's exactly.
+// Where it still fails (docs/gap_tolerant_filling.md): breaks longer than max_gap, contour
+// absent over long stretches (real footage against a similar background), spurious strokes.
 class GapTolerantFilling final : public Estimator {
  public:
   Method method() const override { return Method::GapTolerantFilling; }

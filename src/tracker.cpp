@@ -58,7 +58,7 @@ double Tracker::area_limit(const ImageView& frame, const Params& params,
   // Just above what would be refused anyway: a larger estimate is a leak, whatever its size.
   double limit = std::max(tp.max_area, 0.0) * frame.width * frame.height;
   if (last_good_ && tp.leak_factor > 0) limit = std::min(limit, tp.leak_factor * last_good_->area);
-  limit = std::floor(limit) + 1;
+  limit = std::isfinite(limit) ? std::min(std::floor(limit) + 1, kMaxAreaLimit) : kMaxAreaLimit;
   return params.area_limit > 0 ? std::min(limit, params.area_limit) : limit;
 }
 
@@ -241,7 +241,8 @@ Features Tracker::estimate_around(EdgeSource& edges, Method m, const Params& par
     const Rect& b = last_good_->bbox;
     const Rect ahead{b.x + static_cast<int>(std::lround(velocity_.x)),
                      b.y + static_cast<int>(std::lround(velocity_.y)), b.width, b.height};
-    margin = std::max(16, static_cast<int>(tp.edge_margin * std::max(b.width, b.height)));
+    const double grown_by = tp.edge_margin * std::max(b.width, b.height);
+    margin = std::max(16, static_cast<int>(std::min(grown_by, 1e6)));
     // Gap-tolerant filling reads a band of max_gap + 2 px beside its lines, beyond the box.
     if (m == Method::GapTolerantFilling) margin += params.max_gap + 2;
     const Rect r = grown(united(b, ahead), margin, params.block_size, frame);
@@ -254,13 +255,10 @@ Features Tracker::estimate_around(EdgeSource& edges, Method m, const Params& par
     translate(f, region.x, region.y);
     if (trace) trace->translate(region.x, region.y);
     if (!f.valid()) return f;
-    // A fill stopped at the limit is refused on any region: no need to look further.
-    if (f.area > limit_) {
-      f.status = border_status(f.bbox, frame.width, frame.height);
-      return f;
-    }
     // Reaching the region's edge (where it is not the frame's) means the region cut the estimate:
-    // redo it on a larger region, so that the answer never depends on the region.
+    // redo it on a larger region, so that the answer does not depend on the region. (Except
+    // through Canny's hysteresis, which is not local: a weak edge joined to a strong one only
+    // outside the region is missing inside it. docs/tracker.md says so.)
     // Edges within a few pixels of an inner border may differ from the frame's (later filter
     // passes replicate the region's border), so coming that close counts as being cut too.
     const int g = edges.border_guard();
@@ -269,6 +267,7 @@ Features Tracker::estimate_around(EdgeSource& edges, Method m, const Params& par
                      (b.y <= region.y + g && region.y > 0) ||
                      (b.right() >= region.right() - g && region.right() < frame.width) ||
                      (b.bottom() >= region.bottom() - g && region.bottom() < frame.height);
+    // A fill stopped at the limit and not cut by the region is refused anyway: no regrowing.
     if (!cut || region == whole) {
       f.status = border_status(f.bbox, frame.width, frame.height);
       return f;

@@ -4,8 +4,14 @@
 // which keeps the __restrict__ promises the vectoriser relies on.
 #pragma once
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <cstddef>  // defines __GLIBC__ where glibc is the C library
+
+// Needs ifunc: x86-64 ELF with glibc.
+#if defined(__x86_64__) && defined(__GLIBC__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
 #define PROJTRACK_VECTOR_CLONES [[gnu::target_clones("avx2", "default")]]
-#else
+#endif
+#endif
+#ifndef PROJTRACK_VECTOR_CLONES
 #define PROJTRACK_VECTOR_CLONES [[gnu::noinline]]
 #endif

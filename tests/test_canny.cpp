@@ -2,6 +2,7 @@
 // benchmark's numbers and the paper's comparison all assume OpenCV's detector.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -69,6 +70,15 @@ TEST(Canny, ThresholdsBeyondEveryGradientGiveNoEdges) {
   CannyDetector detector;
   EXPECT_EQ(cv::countNonZero(ours(img, 1e9, 1e12, detector)), 0);
   EXPECT_EQ(cv::countNonZero(ours(img, 1e9, 1e12, detector) != opencv(img, 1e9, 1e12)), 0);
+}
+
+TEST(Canny, NaNThresholdsReadAsTheLowestLevel) {
+  cv::RNG rng(9);
+  const cv::Mat img = random_image(rng, 40, 30, 3);
+  CannyDetector detector;
+  const cv::Mat lowest = ours(img, -1, -1, detector);
+  EXPECT_EQ(cv::countNonZero(ours(img, std::nan(""), std::nan(""), detector) != lowest), 0);
+  EXPECT_EQ(cv::countNonZero(ours(img, -1e300, -5, detector) != lowest), 0);
 }
 
 TEST(Canny, AnInvalidSourceGivesAnEmptyView) {

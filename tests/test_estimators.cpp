@@ -257,11 +257,22 @@ TEST(GapTolerantFilling, OnClosedContoursItIsGridFilling) {
   cv::circle(bar, {80, 90}, 40, cv::Scalar(255), cv::FILLED);
   bar(cv::Rect(118, 88, 60, 3)).setTo(255);
   scenes.push_back(test::scene_from_mask("disc with a 3 px bar", bar));
+  // Contours the frame border cuts do not end there (a hand entering from below).
+  cv::Mat cut(180, 200, CV_8U, cv::Scalar(0));
+  cv::circle(cut, {100, 165}, 45, cv::Scalar(255), cv::FILLED);
+  cv::circle(cut, {170, 60}, 30, cv::Scalar(255), cv::FILLED);  // over the border by 15 px
+  scenes.push_back(test::scene_from_mask("discs cut by the border", cut));
+  // The frame's border is no edge here: the contours run into it and stop.
+  cv::Mat eroded;
+  cv::erode(cut, eroded, cv::getStructuringElement(cv::MORPH_CROSS, {3, 3}), {-1, -1}, 1,
+            cv::BORDER_REPLICATE);
+  scenes.back().edges = cut - eroded;
   auto grid = make_estimator(Method::GridFilling);
   auto ours = make_estimator(Method::GapTolerantFilling);
   for (int m : {4, 8}) {
     Params p = paper_params();
     p.grid_size = m;
+    p.max_gap = kMaxGap;  // the widest band: the strictest test
     for (const Scene& s : scenes) {
       for (Point2i seed : test::interior_points(s, 9)) {
         const Features a = grid->estimate(s.edge_view(), seed, p);

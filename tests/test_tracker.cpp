@@ -132,6 +132,27 @@ TEST(Tracker, ALeakStopsAtTheLeakFactorInsteadOfFillingTheFrame) {
   }
 }
 
+// Parameters nothing validates in the library (the element's properties are ranged): defined
+// answers, never undefined behaviour (the sanitizer suite runs this).
+TEST(Tracker, ExtremeTrackerParamsGiveDefinedAnswers) {
+  const Frame f = disc_frame(160, 120, 40);
+  for (double margin : {1e300, -1.0, 0.0}) {
+    for (double max_area : {std::nan(""), 1e300, 0.5}) {
+      TrackerParams tp = manual();
+      tp.edge_margin = margin;
+      tp.max_area = max_area;
+      Tracker t;
+      t.seed({160, 120});
+      for (int i = 0; i < 3; ++i) {
+        const TrackResult r =
+            t.track(f.g(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp);
+        EXPECT_NE(r.status, Status::InvalidParameters) << margin << " " << max_area;
+        if (r.features.valid()) EXPECT_TRUE(std::isfinite(r.features.area));
+      }
+    }
+  }
+}
+
 TEST(Tracker, AUserSeedOnTheBackgroundIsRefused) {
   const Frame f = disc_frame(160, 120, 40);
   Tracker t;
