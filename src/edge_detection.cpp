@@ -43,8 +43,8 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
   if (params.detector == EdgeDetector::Input && params.input_black_level <= 0)
     return ImageView(gray.row(y0) + x0, cols, rows, gray.stride);
   const ImageView in_region(gray.row(y0) + x0, cols, rows, gray.stride);
-  cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);
   if (params.detector == EdgeDetector::Input) {
+    cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);
     cv::threshold(wrap(in_region), edges, std::min(params.input_black_level, 255), 255,
                   cv::THRESH_BINARY);
     return view_of(edges);
@@ -67,6 +67,8 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
   if (params.detector == EdgeDetector::Canny) {
     return canny_.detect(blurred, low, high);
   }
+  // Canny keeps its own map; only Sobel writes into edges_.
+  cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);
   const cv::Mat src = wrap(blurred);
   cv::Mat gx = wrap_buffer(gx_, rows, cols, CV_16SC1), gy = wrap_buffer(gy_, rows, cols, CV_16SC1);
   cv::Sobel(src, gx, CV_16S, 1, 0, 3, 1, 0, cv::BORDER_REPLICATE);

@@ -51,7 +51,8 @@ class EdgeMap {
   // that changes size from frame to frame does not reallocate.
   template <class T>
   cv::Mat wrap_buffer(std::vector<T>& buffer, int rows, int cols, int type);
-  std::vector<std::uint8_t> blurred_[2], edges_;
+  std::vector<std::uint8_t> blurred_[2],
+      edges_;  // edges_: Sobel and thresholded input; Canny has its own
   std::vector<std::int16_t> gx_, gy_;
   CannyDetector canny_;
 };

@@ -1,27 +1,12 @@
 #include "gap_tolerant_filling.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 
 #include "vector_clones.hpp"
 
 namespace projtrack {
 
-namespace {
-
-constexpr std::uint8_t kAlongRow = 1, kAlongColumn = 2;
-
-// The first coordinate >= from on the grid of period m through `anchor`.
-int first_on_grid(int from, int anchor, int m) {
-  const int phase = ((anchor - from) % m + m) % m;
-  return from + phase;
-}
-
-}  // namespace
-
-// How far a grid line runs from the free pixel `start`: [first, last] along the line.
-// Horizontal lines are rows (position = x), vertical lines columns (position = y).
 namespace {
 
 // High bit of every non-zero byte of v set, every other bit clear.
@@ -44,20 +29,14 @@ inline std::uint64_t load8(const std::uint8_t* p) {
 
 }  // namespace
 
-GapTolerantFilling::Span GapTolerantFilling::walk(const ImageView& edges, bool vertical, int at,
-                                                  int start, int gap, Work& work) {
-  const int length = vertical ? edges.height : edges.width;
+GridFilling::Span GapTolerantFilling::extend(const ImageView& edges, bool vertical, int at,
+                                             int start, const Params& params, Work& work) {
+  const int gap = params.max_gap;
   const int across = vertical ? edges.width : edges.height;
-  const std::uint8_t bit = vertical ? kAlongColumn : kAlongRow;
-  auto blocked = [&](int i) {
-    const int x = vertical ? at : i, y = vertical ? i : at;
-    return edges.row(y)[x] || (reached_.row(y)[x] & bit);
-  };
   // 1. The plain grid run: up to an edge, the border or pixels this line already reached.
-  int a = start, b = start;
-  while (a > 0 && !blocked(a - 1)) --a;
-  while (b < length - 1 && !blocked(b + 1)) ++b;
-  work.pixels += b - a + 3;
+  const Span plain = GridFilling::extend(edges, vertical, at, start, params, work);
+  const int a = plain.first, b = plain.last;
+  ++work.pixels;
 
   // 2. For every position of the run, the offset across the line of the nearest edge pixel on
   // each side within reach = gap + 1 px, or none (gap + 2).
@@ -195,71 +174,6 @@ GapTolerantFilling::Span GapTolerantFilling::walk(const ImageView& edges, bool v
     return a + last;
   };
   return {extend(-1), extend(+1)};
-}
-
-void GapTolerantFilling::run(const Context& ctx, Features& out, Work& work) {
-  const ImageView& edges = ctx.edges;
-  const int width = edges.width, height = edges.height, m = ctx.params.grid_size;
-  const int gap = ctx.params.max_gap;
-  const Point2i seed = out.seed;
-  reached_.ensure(width, height);
-  pending_.clear();
-  pending_.push_back({seed, false});
-  pending_.push_back({seed, true});
-  std::uint64_t count = 0, sum_x = 0, sum_y = 0;
-  BoundsAccumulator bounds;
-  const double cell = static_cast<double>(m) * m / (2.0 * m - 1.0);
-  const double limit = ctx.params.area_limit > 0 ? ctx.params.area_limit : HUGE_VAL;
-
-  while (!pending_.empty() && static_cast<double>(count) * cell <= limit) {
-    const Pending item = pending_.back();
-    pending_.pop_back();
-    const int x = item.p.x, y = item.p.y;
-    ++work.pixels;
-    if (!item.vertical) {
-      std::uint8_t* r = reached_.row(y);
-      if (edges.row(y)[x] || (r[x] & kAlongRow)) continue;
-      const Span s = walk(edges, false, y, x, gap, work);
-      for (int i = s.first; i <= s.last; ++i) {
-        if (!r[i]) {
-          ++count;
-          sum_x += i;
-          sum_y += y;
-        }
-        r[i] |= kAlongRow;
-      }
-      bounds.add_run(s.first, s.last, y);
-      if (ctx.trace) ctx.trace->runs.push_back({{s.first, y}, {s.last, y}});
-      for (int gx = first_on_grid(s.first, seed.x, m); gx <= s.last; gx += m) {
-        if (!(r[gx] & kAlongColumn)) pending_.push_back({{gx, y}, true});
-      }
-    } else {
-      if (edges.row(y)[x] || (reached_.row(y)[x] & kAlongColumn)) continue;
-      const Span s = walk(edges, true, x, y, gap, work);
-      for (int i = s.first; i <= s.last; ++i) {
-        std::uint8_t& c = reached_.row(i)[x];
-        if (!c) {
-          ++count;
-          sum_x += x;
-          sum_y += i;
-        }
-        c |= kAlongColumn;
-      }
-      bounds.add(x, s.first);
-      bounds.add(x, s.last);
-      if (ctx.trace) ctx.trace->runs.push_back({{x, s.first}, {x, s.last}});
-      for (int gy = first_on_grid(s.first, seed.y, m); gy <= s.last; gy += m) {
-        if (!(reached_.row(gy)[x] & kAlongRow)) pending_.push_back({{x, gy}, false});
-      }
-    }
-  }
-
-  out.area = std::min(static_cast<double>(count) * cell, static_cast<double>(width) * height);
-  out.centroid = {static_cast<double>(sum_x) / count, static_cast<double>(sum_y) / count};
-  out.bbox = bounds.rect();
-  out.iterations = 1;
-  if (ctx.trace) ctx.trace->iterations.push_back({seed, out.centroid, out.area});
-  reached_.clear(out.bbox);
 }
 
 }  // namespace projtrack

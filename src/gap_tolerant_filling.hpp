@@ -6,8 +6,7 @@
 
 #include <vector>
 
-#include "estimator.hpp"
-#include "scratch_mask.hpp"
+#include "grid_filling.hpp"
 
 namespace projtrack {
 
@@ -22,28 +21,19 @@ namespace projtrack {
 // contours the answers are GridFilling's exactly.
 // Where it still fails (docs/gap_tolerant_filling.md): breaks longer than max_gap, contour
 // absent over long stretches (real footage against a similar background), spurious strokes.
-class GapTolerantFilling final : public Estimator {
+class GapTolerantFilling final : public GridFilling {
  public:
   Method method() const override { return Method::GapTolerantFilling; }
 
  protected:
-  void run(const Context& ctx, Features& out, Work& work) override;
+  // The plain grid run, cut before the first pixel where the line passes through a gap.
+  Span extend(const ImageView& edges, bool vertical, int at, int start, const Params& params,
+              Work& work) override;
 
  private:
-  struct Pending {
-    Point2i p;
-    bool vertical;
-  };
-  struct Span {
-    int first, last;
-  };
-  Span walk(const ImageView& edges, bool vertical, int at, int start, int gap, Work& work);
-
-  ScratchMask reached_;  // bit 1: reached along its row, bit 2: along its column
-  std::vector<Pending> pending_;
   // Per position of the line being walked: the nearest edge on each side, and whether it ends a
   // contour (0: not yet known).
-  std::vector<std::uint8_t> near1_, near2_, end1_, end2_;  // per position of the line being walked
+  std::vector<std::uint8_t> near1_, near2_, end1_, end2_;
 };
 
 }  // namespace projtrack

@@ -6,8 +6,6 @@
 namespace projtrack {
 
 namespace {
-constexpr std::uint8_t kAlongRow = 1, kAlongColumn = 2;
-
 // The first coordinate >= from on the grid of period m through `anchor`.
 int first_on_grid(int from, int anchor, int m) {
   const int phase = ((anchor - from) % m + m) % m;
@@ -15,12 +13,30 @@ int first_on_grid(int from, int anchor, int m) {
 }
 }  // namespace
 
+GridFilling::Span GridFilling::extend(const ImageView& edges, bool vertical, int at, int start,
+                                      const Params&, Work& work) {
+  int a = start, b = start;
+  if (!vertical) {
+    const std::uint8_t* e = edges.row(at);
+    const std::uint8_t* r = reached_.row(at);
+    while (a > 0 && !e[a - 1] && !(r[a - 1] & kAlongRow)) --a;
+    while (b < edges.width - 1 && !e[b + 1] && !(r[b + 1] & kAlongRow)) ++b;
+  } else {
+    const std::uint8_t* e = edges.data + at;
+    const std::uint8_t* r = reached_.row(0) + at;
+    const std::ptrdiff_t es = edges.stride, rs = reached_.stride();
+    while (a > 0 && !e[(a - 1) * es] && !(r[(a - 1) * rs] & kAlongColumn)) --a;
+    while (b < edges.height - 1 && !e[(b + 1) * es] && !(r[(b + 1) * rs] & kAlongColumn)) ++b;
+  }
+  work.pixels += b - a + 2;
+  return {a, b};
+}
+
 void GridFilling::run(const Context& ctx, Features& out, Work& work) {
   const ImageView& edges = ctx.edges;
   const int width = edges.width, height = edges.height, m = ctx.params.grid_size;
   const Point2i seed = out.seed;
   reached_.ensure(width, height);
-  const std::ptrdiff_t rstride = reached_.stride();
   pending_.clear();
   pending_.push_back({seed, false});
   pending_.push_back({seed, true});
@@ -35,51 +51,31 @@ void GridFilling::run(const Context& ctx, Features& out, Work& work) {
     pending_.pop_back();
     const int x = item.p.x, y = item.p.y;
     ++work.pixels;
-    if (!item.vertical) {
-      const std::uint8_t* e = edges.row(y);
-      std::uint8_t* r = reached_.row(y);
-      if (e[x] || (r[x] & kAlongRow)) continue;
-      int x0 = x, x1 = x;
-      while (x0 > 0 && !e[x0 - 1] && !(r[x0 - 1] & kAlongRow)) --x0;
-      while (x1 < width - 1 && !e[x1 + 1] && !(r[x1 + 1] & kAlongRow)) ++x1;
-      work.pixels += x1 - x0 + 2;
-      for (int i = x0; i <= x1; ++i) {
-        if (!r[i]) {
-          ++count;
-          sum_x += i;
-          sum_y += y;
-        }
-        r[i] |= kAlongRow;
+    const std::uint8_t bit = item.vertical ? kAlongColumn : kAlongRow;
+    if (edges.row(y)[x] || (reached_.row(y)[x] & bit)) continue;
+    const int at = item.vertical ? x : y;
+    const Span s = extend(edges, item.vertical, at, item.vertical ? y : x, ctx.params, work);
+    for (int i = s.first; i <= s.last; ++i) {
+      const int px = item.vertical ? x : i, py = item.vertical ? i : y;
+      std::uint8_t& cell_bits = reached_.row(py)[px];
+      if (!cell_bits) {
+        ++count;
+        sum_x += px;
+        sum_y += py;
       }
-      bounds.add_run(x0, x1, y);
-      if (ctx.trace) ctx.trace->runs.push_back({{x0, y}, {x1, y}});
-      for (int gx = first_on_grid(x0, seed.x, m); gx <= x1; gx += m) {
-        if (!(r[gx] & kAlongColumn)) pending_.push_back({{gx, y}, true});
-      }
-    } else {
-      const std::uint8_t* e = edges.data + x;
-      std::uint8_t* r = reached_.row(0) + x;
-      const std::ptrdiff_t es = edges.stride;
-      if (e[y * es] || (r[y * rstride] & kAlongColumn)) continue;
-      int y0 = y, y1 = y;
-      while (y0 > 0 && !e[(y0 - 1) * es] && !(r[(y0 - 1) * rstride] & kAlongColumn)) --y0;
-      while (y1 < height - 1 && !e[(y1 + 1) * es] && !(r[(y1 + 1) * rstride] & kAlongColumn)) ++y1;
-      work.pixels += y1 - y0 + 2;
-      for (int i = y0; i <= y1; ++i) {
-        std::uint8_t& cell = r[i * rstride];
-        if (!cell) {
-          ++count;
-          sum_x += x;
-          sum_y += i;
-        }
-        cell |= kAlongColumn;
-      }
-      bounds.add(x, y0);
-      bounds.add(x, y1);
-      if (ctx.trace) ctx.trace->runs.push_back({{x, y0}, {x, y1}});
-      for (int gy = first_on_grid(y0, seed.y, m); gy <= y1; gy += m) {
-        if (!(r[gy * rstride] & kAlongRow)) pending_.push_back({{x, gy}, false});
-      }
+      cell_bits |= bit;
+    }
+    const Point2i first = item.vertical ? Point2i{x, s.first} : Point2i{s.first, y};
+    const Point2i last = item.vertical ? Point2i{x, s.last} : Point2i{s.last, y};
+    bounds.add(first.x, first.y);
+    bounds.add(last.x, last.y);
+    if (ctx.trace) ctx.trace->runs.push_back({first, last});
+    // The crossing grid lines of the other direction, where this run meets them.
+    const int anchor = item.vertical ? seed.y : seed.x;
+    for (int g = first_on_grid(s.first, anchor, m); g <= s.last; g += m) {
+      const int px = item.vertical ? x : g, py = item.vertical ? g : y;
+      const std::uint8_t other = item.vertical ? kAlongRow : kAlongColumn;
+      if (!(reached_.row(py)[px] & other)) pending_.push_back({{px, py}, !item.vertical});
     }
   }
 

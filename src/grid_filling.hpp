@@ -2,6 +2,7 @@
 // point, so a gap in the contour leaks only where a grid line crosses it.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "estimator.hpp"
@@ -13,19 +14,31 @@ namespace projtrack {
 // 4-connected, run by run. Centroid: the mean of the reached grid pixels. Area: their count
 // scaled to px²: a region of A px² holds about A/m² cells of 2m − 1 grid pixels each, so
 // area = count · m² / (2m − 1) (exact pixel-filling when m = 1).
-class GridFilling final : public Estimator {
+class GridFilling : public Estimator {
  public:
   Method method() const override { return Method::GridFilling; }
 
  protected:
   void run(const Context& ctx, Features& out, Work& work) override;
 
+  // A run along one grid line: positions [first, last], x on a row, y on a column.
+  struct Span {
+    int first, last;
+  };
+  // How far the line through the free pixel `start` runs: the row `at` (vertical = false) or the
+  // column `at`. Here up to an edge, the border or pixels this line already reached; a variant
+  // of the fill changes only this.
+  virtual Span extend(const ImageView& edges, bool vertical, int at, int start,
+                      const Params& params, Work& work);
+
+  static constexpr std::uint8_t kAlongRow = 1, kAlongColumn = 2;  // bits of reached_
+  ScratchMask reached_;  // bit 1: reached along its row, bit 2: along its column
+
  private:
   struct Pending {
     Point2i p;
     bool vertical;
   };
-  ScratchMask reached_;  // bit 1: reached along its row, bit 2: along its column
   std::vector<Pending> pending_;
 };
 

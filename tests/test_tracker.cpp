@@ -147,7 +147,9 @@ TEST(Tracker, ExtremeTrackerParamsGiveDefinedAnswers) {
         const TrackResult r =
             t.track(f.g(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp);
         EXPECT_NE(r.status, Status::InvalidParameters) << margin << " " << max_area;
-        if (r.features.valid()) EXPECT_TRUE(std::isfinite(r.features.area));
+        if (r.features.valid()) {
+          EXPECT_TRUE(std::isfinite(r.features.area));
+        }
       }
     }
   }
