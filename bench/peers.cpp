@@ -2,15 +2,9 @@
 
 #include <opencv2/imgproc.hpp>
 
-namespace projtrack::bench {
+#include "estimator.hpp"  // border_status: the status the estimators give
 
-namespace {
-Status border_status(const Rect& b, int width, int height) {
-  const bool l = b.x <= 0, t = b.y <= 0, r = b.right() >= width, d = b.bottom() >= height;
-  if (l && t && r && d) return Status::CoversFrame;
-  return l || t || r || d ? Status::ReachedBorder : Status::Ok;
-}
-}  // namespace
+namespace projtrack::bench {
 
 Features OpenCvFloodFill::estimate(const cv::Mat& edges, Point2i seed) {
   Features f;

@@ -59,6 +59,7 @@
 #include "edge_detection.hpp"
 #include "frame_gray.hpp"
 #include "overlay.hpp"
+#include "sample_clock.hpp"
 #include "tracker.hpp"
 
 GST_DEBUG_CATEGORY_STATIC(gst_projtrack_debug);
@@ -518,10 +519,11 @@ static TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Setti
   edge_params.input_black_level = st.black_level;
   const projtrack::ImageView gray = projtrack::gst::frame_gray(frame, st.gray);
   projtrack::Trace* trace = s.draw ? &st.trace : nullptr;
-  // Seconds for the smoothing and the push detector: the buffer's time, else 30 frames a second.
+  // Seconds for the smoothing and the push detector: the buffer's time, else the assumed rate.
   const GstClockTime pts = GST_BUFFER_PTS(frame->buffer);
-  const double t = GST_CLOCK_TIME_IS_VALID(pts) ? static_cast<double>(pts) / GST_SECOND
-                                                : static_cast<double>(st.frames) / 30.0;
+  const double t = GST_CLOCK_TIME_IS_VALID(pts)
+                       ? static_cast<double>(pts) / GST_SECOND
+                       : static_cast<double>(st.frames) / projtrack::kAssumedFrameRate;
   ++st.frames;
   // The tracker computes the edges itself: while tracking, only around the object.
   TrackResult r = st.tracker.track(gray, edge_params, t, s.method, s.params, s.tracker, trace);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "gray_conversion.hpp"
+
 namespace projtrack::gst {
 
 namespace {
@@ -45,15 +47,14 @@ class Painter {
     line({tl.x, br.y}, tl, c);
   }
   void square(Point2i p, int radius, Rgb c) {
-    // Clamped in 64 bits: the inner point may be anywhere, INT_MAX included.
-    const auto lo = [&](int v, int limit) {
-      return static_cast<int>(std::clamp<long long>(1LL * v - radius, 0, limit));
-    };
-    const auto hi = [&](int v, int limit) {
-      return static_cast<int>(std::clamp<long long>(1LL * v + radius, -1, limit - 1));
-    };
-    for (int y = lo(p.y, height_), y1 = hi(p.y, height_); y <= y1; ++y)
-      for (int x = lo(p.x, width_), x1 = hi(p.x, width_); x <= x1; ++x) set(x, y, c);
+    // The inner point may be anywhere, INT_MAX included: moved first to just outside the frame
+    // (where the square still misses it), so that the square's corners do not overflow.
+    const Point2i q{std::clamp(p.x, -radius - 1, width_ + radius),
+                    std::clamp(p.y, -radius - 1, height_ + radius)};
+    const Rect r = clip_to_frame({q.x - radius, q.y - radius, 2 * radius + 1, 2 * radius + 1},
+                                 width_, height_);
+    for (int y = r.y; y < r.bottom(); ++y)
+      for (int x = r.x; x < r.right(); ++x) set(x, y, c);
   }
   void cross(Point2d p, int radius, Rgb c) {
     line({p.x - radius, p.y}, {p.x + radius, p.y}, c);
@@ -68,7 +69,7 @@ class Painter {
       out[1] = static_cast<std::uint8_t>(128 + (-38 * c.r - 74 * c.g + 112 * c.b + 128) / 256);
       out[2] = static_cast<std::uint8_t>(128 + (112 * c.r - 94 * c.g - 18 * c.b + 128) / 256);
     } else if (GST_VIDEO_FORMAT_INFO_IS_GRAY(info_)) {
-      out[0] = static_cast<std::uint8_t>((77 * c.r + 150 * c.g + 29 * c.b + 128) >> 8);
+      out[0] = gray_of(c.r, c.g, c.b);
     } else {
       out[0] = c.r;
       out[1] = c.g;
@@ -78,7 +79,7 @@ class Painter {
   }
 
   void write(int x, int y, Rgb c, bool blend) {
-    if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
+    if (!Rect{0, 0, width_, height_}.contains({x, y})) return;
     if (c.r != colour_.r || c.g != colour_.g || c.b != colour_.b || !converted_) {
       components(c, values_);  // once per colour change, not per pixel
       colour_ = c;

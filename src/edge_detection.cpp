@@ -35,11 +35,9 @@ cv::Mat EdgeMap::wrap_buffer(std::vector<T>& buffer, int rows, int cols, int typ
 
 ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const Rect& region) {
   if (!gray.valid()) return {};
-  const int x0 = std::clamp(region.x, 0, gray.width), y0 = std::clamp(region.y, 0, gray.height);
-  const int x1 = std::clamp(region.right(), x0, gray.width);
-  const int y1 = std::clamp(region.bottom(), y0, gray.height);
-  if (x1 <= x0 || y1 <= y0) return {};
-  const int rows = y1 - y0, cols = x1 - x0;
+  const Rect r = clip_to_frame(region, gray.width, gray.height);
+  if (r.empty()) return {};
+  const int x0 = r.x, y0 = r.y, rows = r.height, cols = r.width;
   if (params.detector == EdgeDetector::Input && params.input_black_level <= 0)
     return ImageView(gray.row(y0) + x0, cols, rows, gray.stride);
   const ImageView in_region(gray.row(y0) + x0, cols, rows, gray.stride);
@@ -56,7 +54,7 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
     // The first pass reads the frame around the region; later ones replicate the region's border.
     cv::Mat dst = wrap_buffer(blurred_[i % 2], rows, cols, CV_8UC1);
     if (i == 0)
-      box_blur3(gray, Rect{x0, y0, cols, rows}, dst.data, static_cast<std::ptrdiff_t>(dst.step));
+      box_blur3(gray, r, dst.data, static_cast<std::ptrdiff_t>(dst.step));
     else
       box_blur3(blurred, Rect{0, 0, cols, rows}, dst.data, static_cast<std::ptrdiff_t>(dst.step));
     blurred = view_of(dst);

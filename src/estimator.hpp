@@ -1,4 +1,4 @@
-// The common interface of the six estimators.
+// The common interface of the estimators.
 #pragma once
 
 #include <memory>
@@ -20,7 +20,6 @@ namespace projtrack {
 class Estimator {
  public:
   virtual ~Estimator() = default;
-  virtual Method method() const = 0;
 
   // Estimates the projection features of the object around `inner_point` from `edges` (non-zero
   // = edge), then updates the inner point for the next frame. Never throws on bad input: the

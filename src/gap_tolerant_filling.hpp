@@ -22,9 +22,6 @@ namespace projtrack {
 // Where it still fails (docs/gap_tolerant_filling.md): breaks longer than max_gap, contour
 // absent over long stretches (real footage against a similar background), spurious strokes.
 class GapTolerantFilling final : public GridFilling {
- public:
-  Method method() const override { return Method::GapTolerantFilling; }
-
  protected:
   // The plain grid run, cut before the first pixel where the line passes through a gap.
   Span extend(const ImageView& edges, bool vertical, int at, int start, const Params& params,

@@ -13,7 +13,7 @@ void convert(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b
     std::uint8_t* out = gray + y * gray_stride;
     for (int x = 0; x < width; ++x) {
       const std::ptrdiff_t i = row + static_cast<std::ptrdiff_t>(x) * kPixelStride;
-      out[x] = static_cast<std::uint8_t>((77 * r[i] + 150 * g[i] + 29 * b[i] + 128) >> 8);
+      out[x] = gray_of(r[i], g[i], b[i]);
     }
   }
 }

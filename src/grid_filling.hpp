@@ -15,9 +15,6 @@ namespace projtrack {
 // scaled to px²: a region of A px² holds about A/m² cells of 2m − 1 grid pixels each, so
 // area = count · m² / (2m − 1) (exact pixel-filling when m = 1).
 class GridFilling : public Estimator {
- public:
-  Method method() const override { return Method::GridFilling; }
-
  protected:
   void run(const Context& ctx, Features& out, Work& work) override;
 

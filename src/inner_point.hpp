@@ -1,4 +1,4 @@
-// The inner point: finding a free pixel to start from, and the update common to all six methods.
+// The inner point: finding a free pixel to start from, and the update common to every method.
 #pragma once
 
 #include <optional>

@@ -8,9 +8,6 @@
 namespace projtrack {
 
 class IterativeRayCasting final : public Estimator {
- public:
-  Method method() const override { return Method::IterativeRayCasting; }
-
  protected:
   void run(const Context& ctx, Features& out, Work& work) override;
 

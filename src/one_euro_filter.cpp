@@ -16,13 +16,10 @@ double OneEuroFilter::filter(double x, double t) {
     initialised_ = true;
     x_prev_ = x;
     dx_prev_ = 0;
-    t_prev_ = t;
+    clock_.start(t);
     return x;
   }
-  double dt = t - t_prev_;
-  // Time that stands still or goes back (a seek): one frame, and the clock follows `t` again.
-  if (!(dt > 0) || !std::isfinite(dt)) dt = 1.0 / 30.0;
-  t_prev_ = std::isfinite(t) ? t : t_prev_ + dt;
+  const double dt = clock_.step(t);
   const double dx = (x - x_prev_) / dt;
   const double dx_hat = dx_prev_ + alpha(p_.d_cutoff, dt) * (dx - dx_prev_);
   const double cutoff = p_.min_cutoff + p_.beta * std::abs(dx_hat);

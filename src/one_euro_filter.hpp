@@ -1,6 +1,8 @@
 // The One Euro filter (Casiez, Roussel & Vogel, CHI 2012): the standard smoother for pointers.
 #pragma once
 
+#include "sample_clock.hpp"
+
 namespace projtrack {
 
 // A low-pass filter whose cutoff rises with speed: slow motion is smoothed hard (no jitter), fast
@@ -14,19 +16,18 @@ class OneEuroFilter {
     double d_cutoff = 1.0;    // Hz, for the speed estimate
   };
 
-  OneEuroFilter() = default;
-  explicit OneEuroFilter(Params p) : p_(p) {}
   void set_params(const Params& p) { p_ = p; }
 
   // Filters sample `x` taken at `t` seconds. A time that does not advance (unknown timestamps)
-  // is taken as one 30 fps frame after the previous sample.
+  // is taken as one frame after the previous sample (see SampleClock).
   double filter(double x, double t);
   void reset() { initialised_ = false; }
 
  private:
   Params p_;
   bool initialised_ = false;
-  double x_prev_ = 0, dx_prev_ = 0, t_prev_ = 0;
+  double x_prev_ = 0, dx_prev_ = 0;
+  SampleClock clock_;
 };
 
 }  // namespace projtrack

@@ -12,9 +12,6 @@ namespace projtrack {
 // Exact on a closed contour: centroid = mean of the filled pixels, area = their count. One
 // missing edge pixel lets it flood the background.
 class PixelFilling final : public Estimator {
- public:
-  Method method() const override { return Method::PixelFilling; }
-
  protected:
   void run(const Context& ctx, Features& out, Work& work) override;
 

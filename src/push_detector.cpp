@@ -9,15 +9,13 @@ bool PushDetector::update(double depth, double t) {
   if (state_ == State::Unset) {
     state_ = State::Resting;
     rest_ = depth;
-    t_prev_ = t;
+    clock_.start(t);
     return false;
   }
-  double dt = t - t_prev_;
-  // Time that stands still or goes back (a seek): one frame, and the clock follows `t` again.
-  if (!(dt > 0) || !std::isfinite(dt)) dt = 1.0 / 30.0;
-  if (std::isfinite(t) && t < t_prev_) t_start_ -= t_prev_ - t;  // keep the push's duration
-  t_prev_ = std::isfinite(t) ? t : t_prev_ + dt;
-  const double now = t_prev_;
+  const double before = clock_.now();
+  const double dt = clock_.step(t);
+  if (std::isfinite(t) && t < before) t_start_ -= before - t;  // keep the push's duration
+  const double now = clock_.now();
   if (state_ == State::Resting) {
     if (depth > rest_ * (1 + p_.threshold)) {
       state_ = State::Pushed;

@@ -1,6 +1,8 @@
 // A "push": the tracked object moved quickly toward the camera and back — a click in 3D.
 #pragma once
 
+#include "sample_clock.hpp"
+
 namespace projtrack {
 
 // Watches the relative depth (1 at acquisition, growing as the object nears the camera). A push
@@ -15,8 +17,6 @@ class PushDetector {
     double rest_time = 1.0;     // s, time constant of the resting depth
   };
 
-  PushDetector() = default;
-  explicit PushDetector(Params p) : p_(p) {}
   void set_params(const Params& p) { p_ = p; }
 
   // Feeds one depth sample at `t` seconds; true exactly once per push, when it returns.
@@ -27,7 +27,8 @@ class PushDetector {
   enum class State { Unset, Resting, Pushed };
   Params p_;
   State state_ = State::Unset;
-  double rest_ = 1.0, t_prev_ = 0, t_start_ = 0;
+  double rest_ = 1.0, t_start_ = 0;
+  SampleClock clock_;
 };
 
 }  // namespace projtrack

@@ -1,7 +1,5 @@
 #include "rasterized_ray_casting.hpp"
 
-#include <algorithm>
-
 namespace projtrack {
 
 void RasterizedRayCasting::run(const Context& ctx, Features& out, Work& work) {
@@ -19,7 +17,7 @@ void RasterizedRayCasting::run(const Context& ctx, Features& out, Work& work) {
     const std::size_t index = static_cast<std::size_t>(by) * blocks_x + bx;
     if (selected_[index]) return;
     selected_[index] = 1;
-    const Rect r{bx * m, by * m, std::min(m, width - bx * m), std::min(m, height - by * m)};
+    const Rect r = clip_to_frame({bx * m, by * m, m, m}, width, height);
     const double a = static_cast<double>(r.width) * r.height;
     area += a;
     sum_x += a * (r.x + 0.5 * (r.width - 1));

@@ -15,9 +15,6 @@ namespace projtrack {
 // clipped area: the paper's "average of the block positions" for whole blocks). Area: the sum of
 // the selected blocks' areas.
 class RasterizedRayCasting final : public Estimator {
- public:
-  Method method() const override { return Method::RasterizedRayCasting; }
-
  protected:
   void run(const Context& ctx, Features& out, Work& work) override;
 

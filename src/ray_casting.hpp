@@ -9,9 +9,6 @@ namespace projtrack {
 
 // Area: the star polygon through the hits (the paper's "sum of the ray lengths" is not an area).
 class RayCasting final : public Estimator {
- public:
-  Method method() const override { return Method::RayCasting; }
-
  protected:
   void run(const Context& ctx, Features& out, Work& work) override;
 

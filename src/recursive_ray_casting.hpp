@@ -13,9 +13,6 @@ namespace projtrack {
 // last level's fans (each fan is the star polygon through one origin's n hits), i.e. the area the
 // rays sweep, computed once after the last iteration.
 class RecursiveRayCasting final : public Estimator {
- public:
-  Method method() const override { return Method::RecursiveRayCasting; }
-
  protected:
   void run(const Context& ctx, Features& out, Work& work) override;
 

@@ -23,7 +23,9 @@ TEST(OneEuroFilter, RemovesJitterAtRest) {
 }
 
 TEST(OneEuroFilter, FollowsFastMotionWithLittleLag) {
-  OneEuroFilter smooth({1.0, 0.5, 1.0}), stiff({1.0, 0.0, 1.0});
+  OneEuroFilter smooth, stiff;
+  smooth.set_params({1.0, 0.5, 1.0});
+  stiff.set_params({1.0, 0.0, 1.0});
   double lag_smooth = 0, lag_stiff = 0;
   for (int i = 0; i < 30; ++i) {  // a sweep across the frame in one second
     const double x = -1 + 2.0 * i / 29;
