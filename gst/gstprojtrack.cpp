@@ -211,6 +211,21 @@ GType gst_projtrack_acquisition_get_type(void) {
 G_DEFINE_TYPE(GstProjtrack, gst_projtrack, GST_TYPE_VIDEO_FILTER)
 GST_ELEMENT_REGISTER_DEFINE(projtrack, "projtrack", GST_RANK_NONE, GST_TYPE_PROJTRACK)
 
+// The inner point the user gives (a property, a click), and what the streaming thread does with
+// it before its next frame, are written here only: a whole point seeds the track there; a point
+// with a coordinate of -1 stops it, unless `awaiting_coordinate` (a property just gave the first
+// coordinate of a new point: the track goes on until the second comes).
+static void set_inner_point_locked(GstProjtrack* self, int x, int y,
+                                   bool awaiting_coordinate = false) {
+  Settings& s = *self->settings;
+  s.seed_x = x;
+  s.seed_y = y;
+  if (x >= 0 && y >= 0)
+    self->pending = SeedCommand::Seed;
+  else if (!awaiting_coordinate)
+    self->pending = SeedCommand::Reset;
+}
+
 static void gst_projtrack_set_property(GObject* object, guint prop_id, const GValue* value,
                                        GParamSpec* pspec) {
   auto* self = GST_PROJTRACK(object);
@@ -256,11 +271,8 @@ static void gst_projtrack_set_property(GObject* object, guint prop_id, const GVa
     case PROP_INNER_POINT_X:
     case PROP_INNER_POINT_Y: {
       const int v = g_value_get_int(value);
-      (prop_id == PROP_INNER_POINT_X ? s.seed_x : s.seed_y) = v;
-      if (v < 0)
-        self->pending = SeedCommand::Reset;
-      else if (s.seed_x >= 0 && s.seed_y >= 0)
-        self->pending = SeedCommand::Seed;
+      const bool x = prop_id == PROP_INNER_POINT_X;
+      set_inner_point_locked(self, x ? v : s.seed_x, x ? s.seed_y : v, v >= 0);
       break;
     }
     case PROP_DRAW:
@@ -374,9 +386,8 @@ static void gst_projtrack_get_property(GObject* object, guint prop_id, GValue* v
 }
 
 // A restart (caps change, stop/start) begins again from the last inner point given, if any.
-static void reseed_from_settings_locked(GstProjtrack* self) {
-  const Settings& s = *self->settings;
-  self->pending = s.seed_x >= 0 && s.seed_y >= 0 ? SeedCommand::Seed : SeedCommand::Reset;
+static void reseed_locked(GstProjtrack* self) {
+  set_inner_point_locked(self, self->settings->seed_x, self->settings->seed_y);
 }
 
 static gboolean gst_projtrack_set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info,
@@ -392,7 +403,7 @@ static gboolean gst_projtrack_set_info(GstVideoFilter* filter, GstCaps*, GstVide
   GST_OBJECT_LOCK(self);
   self->frame_width = width;
   self->frame_height = height;
-  if (width != st.width || height != st.height) reseed_from_settings_locked(self);
+  if (width != st.width || height != st.height) reseed_locked(self);
   GST_OBJECT_UNLOCK(self);
   if (width != st.width || height != st.height) {
     GST_DEBUG_OBJECT(self, "new frame size %dx%d: the track restarts", width, height);
@@ -408,7 +419,7 @@ static gboolean gst_projtrack_stop(GstBaseTransform* trans) {
   delete self->stream;
   self->stream = nullptr;
   GST_OBJECT_LOCK(self);
-  reseed_from_settings_locked(self);
+  reseed_locked(self);
   GST_OBJECT_UNLOCK(self);
   return TRUE;
 }
@@ -424,22 +435,15 @@ static gboolean gst_projtrack_src_event(GstBaseTransform* trans, GstEvent* event
     if (gst_navigation_event_parse_mouse_button_event(event, &button, &x, &y) &&
         (button == 1 || button == 3) && std::isfinite(x) && std::isfinite(y)) {
       GST_OBJECT_LOCK(self);
-      Settings& s = *self->settings;
       const double px = std::round(x), py = std::round(y);
       const bool in_picture =
           px >= 0 && py >= 0 && px < self->frame_width && py < self->frame_height;
-      bool changed = true;
-      if (button == 3) {
-        s.seed_x = s.seed_y = -1;
-        self->pending = SeedCommand::Reset;
-      } else if (in_picture) {
-        s.seed_x = static_cast<int>(px);
-        s.seed_y = static_cast<int>(py);
-        self->pending = SeedCommand::Seed;
-      } else {
-        changed = false;
-      }
-      const int sx = s.seed_x, sy = s.seed_y;
+      const bool changed = button == 3 || in_picture;
+      if (button == 3)
+        set_inner_point_locked(self, -1, -1);
+      else if (in_picture)
+        set_inner_point_locked(self, static_cast<int>(px), static_cast<int>(py));
+      const int sx = self->settings->seed_x, sy = self->settings->seed_y;
       GST_OBJECT_UNLOCK(self);
       GST_INFO_OBJECT(self, "click (button %d) at %.1f, %.1f: %s inner point %d, %d", button, x, y,
                       changed ? "new" : "outside the picture, kept the", sx, sy);

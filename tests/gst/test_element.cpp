@@ -363,6 +363,34 @@ TEST_F(Element, ClickSetsTheInnerPointAndRightClickStops) {
   EXPECT_EQ(x, -1);
 }
 
+// A property gives the point one coordinate at a time: the first waits for the second (the track
+// in hand goes on), the second seeds the track there, and -1 in either stops it.
+TEST_F(Element, AnInnerPointGivenOneCoordinateAtATimeSeedsWhenWhole) {
+  const DiscFrame scene{240, 180, 120, 90, 30};
+  set_caps(scene, "GRAY8");
+  gst_util_set_object_arg(G_OBJECT(h_->element), "acquisition", "center");
+  int frame = 0;
+  // Whether the track (re)started on the next frame.
+  const auto acquired = [&] {
+    gst_buffer_unref(push(scene.gray8(), frame++));
+    GstMessage* m = message();
+    EXPECT_EQ(status_of(m), "ok");
+    gboolean a = FALSE;
+    gst_structure_get_boolean(gst_message_get_structure(m), "acquired", &a);
+    gst_message_unref(m);
+    return a == TRUE;
+  };
+  EXPECT_TRUE(acquired());  // at the frame centre
+  EXPECT_FALSE(acquired());
+  g_object_set(h_->element, "inner-point-x", 125, nullptr);
+  EXPECT_FALSE(acquired());  // half a point: the centre's track goes on
+  g_object_set(h_->element, "inner-point-y", 95, nullptr);
+  EXPECT_TRUE(acquired());  // a whole point: a new track from it
+  EXPECT_FALSE(acquired());
+  g_object_set(h_->element, "inner-point-y", -1, nullptr);
+  EXPECT_TRUE(acquired());  // stopped: the centre again
+}
+
 TEST_F(Element, ClicksOutsideThePictureAreIgnored) {
   const DiscFrame scene{240, 180, 70, 90, 30};
   set_caps(scene, "GRAY8");
