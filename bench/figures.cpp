@@ -27,7 +27,7 @@ cv::Mat panel(const cv::Mat& base, Method method, const Features& f, const Trace
   cv::Mat img = base.clone();
   for (const Trace::Run& r : trace.runs) {
     const cv::Rect run(r.first.x, r.first.y, r.last.x - r.first.x + 1, r.last.y - r.first.y + 1);
-    if (method == Method::GridFilling || method == Method::GapTolerantFilling)
+    if (method_info(method).trace == TraceKind::GridLines)
       img(run).setTo(kGrid);
     else
       tint(img, run, kFill);

@@ -3,6 +3,7 @@
 // parameters, draws the paper's figures, and writes CSVs for bench/report.py.
 //
 //   projtrack-bench [--quick] [--out DIR] [--seeds N] [--reps N]
+//   projtrack-bench --list-methods   the table of methods as CSV (a run writes it to DIR too)
 #include <sys/utsname.h>
 
 #include <algorithm>
@@ -26,6 +27,7 @@
 
 #include "estimator.hpp"
 #include "figures.hpp"
+#include "method_list.hpp"
 #include "peers.hpp"
 #include "progress.hpp"
 #include "scene.hpp"
@@ -189,11 +191,11 @@ int sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progres
     std::vector<Method> methods;
     std::function<void(Params&, double)> set;
   };
-  const std::vector<Method> rays_methods = {Method::RayCasting, Method::IterativeRayCasting,
-                                            Method::RecursiveRayCasting,
-                                            Method::RasterizedRayCasting};
-  const std::vector<Method> iterative = {Method::IterativeRayCasting, Method::RecursiveRayCasting,
-                                         Method::RasterizedRayCasting};
+  std::vector<Method> rays_methods, iterative;
+  for (const MethodInfo& m : kMethods) {
+    if (m.family == Family::Rays) rays_methods.push_back(m.method);
+    if (m.iterative) iterative.push_back(m.method);
+  }
   std::vector<Axis> axes = {
       // One grid size serves both grid fills: tuned on the element's default method, ours.
       {"grid_size",
@@ -380,6 +382,10 @@ void write_meta(const Options& opt, const Params& compared, const Params& defaul
 int run(const Options& opt) {
   cv::setNumThreads(1);
   std::filesystem::create_directories(opt.out + "/figures");
+  if (!write_method_list(opt.out)) {
+    std::cerr << "projtrack-bench: cannot write " << opt.out << "/methods.csv\n";
+    return 1;
+  }
   const Params defaults;
   // The comparison runs at the paper's own parameters (its figures: n = 32, 16^2 recursion shown
   // at n = 16 but n = 32 throughout here, 8-rasterization, 8-grid; the original system's
@@ -455,8 +461,12 @@ int main(int argc, char** argv) {
       opt.seeds = std::max(1, std::atoi(value().c_str()));
     } else if (a == "--reps") {
       opt.reps = std::max(1, std::atoi(value().c_str()));
+    } else if (a == "--list-methods") {
+      projtrack::bench::write_method_list(std::cout);
+      return 0;
     } else {
-      std::cerr << "usage: projtrack-bench [--quick] [--out DIR] [--seeds N] [--reps N]\n";
+      std::cerr << "usage: projtrack-bench [--quick] [--out DIR] [--seeds N] [--reps N] "
+                   "[--list-methods]\n";
       return 2;
     }
   }

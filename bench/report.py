@@ -3,9 +3,9 @@
 
     bench/report.py RESULTS_DIR MARKDOWN_FILE
 
-RESULTS_DIR holds runs.csv, scenes.csv, sweep.csv, edges.csv, meta.json and figures/ (written by
-projtrack-bench); the plots are written to RESULTS_DIR/figures too. Every number in the markdown
-is computed here from those files.
+RESULTS_DIR holds methods.csv, runs.csv, scenes.csv, sweep.csv, edges.csv, meta.json and
+figures/ (written by projtrack-bench); the plots are written to RESULTS_DIR/figures too. Every
+number in the markdown is computed here from those files.
 """
 import csv
 import gzip
@@ -21,10 +21,10 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-METHODS = ['ray-casting', 'iterative-ray-casting', 'recursive-ray-casting',
-           'rasterized-ray-casting', 'pixel-filling', 'grid-filling', 'gap-tolerant-filling']
-PAPER_METHODS = METHODS[:6]
-OURS = 'gap-tolerant-filling'
+# The methods and their traits are read from RESULTS_DIR/methods.csv (the library's table of
+# methods, written by projtrack-bench); the claims and targets below name the methods they are
+# about.
+OURS = 'gap-tolerant-filling'  # issue 8's targets are this method's
 # Parameters whose default is held away from the sweep's accuracy-only choice, and why.
 HELD = {'grid_size': 'speed: the element runs the default method on every frame and its cost '
                      'grows as 1/m; at 16 the element keeps the speed targets of '
@@ -36,8 +36,6 @@ HELD = {'grid_size': 'speed: the element runs the default method on every frame 
                    'of 43 % on the sphere and 91 % on the hand at 10 % gaps; with 12, none). '
                    'What a larger max gap costs is accuracy where spurious strokes end near a '
                    'line inside the object'}
-RAY_METHODS = METHODS[:4]
-ITERATIVE = METHODS[1:4]
 PEERS = ['opencv-floodfill', 'opencv-components']
 NUMERIC = ['width', 'height', 'scale', 'gap_rate', 'acquired_frame', 'correct', 'sane_after', 'spurious', 'instance', 'seed_x', 'seed_y', 'centroid_x',
            'centroid_y', 'area', 'true_centroid_x', 'true_centroid_y', 'true_area',
@@ -61,6 +59,12 @@ def load(path):
                     r[k] = float(r[k]) if r[k] != '' else math.nan
             rows.append(r)
     return rows
+
+
+def load_methods(results):
+    """The table of methods, in the library's order: name, family, iterative, from_paper, trace."""
+    with open(os.path.join(results, 'methods.csv')) as f:
+        return list(csv.DictReader(f))
 
 
 def select(rows, **kw):
@@ -146,7 +150,12 @@ class Report:
         self.resolutions = sorted({r['resolution'] for r in self.runs},
                                   key=lambda s: int(s.split('x')[0]))
         self.rates = sorted({r['gap_rate'] for r in self.runs})
-        self.contenders = [m for m in METHODS + PEERS if select(self.runs, method=m)]
+        table = load_methods(results)
+        self.methods = [m['method'] for m in table]
+        self.ray_methods = [m['method'] for m in table if m['family'] == 'rays']
+        self.iterative = [m['method'] for m in table if m['iterative'] == '1']
+        self.ours = {m['method'] for m in table if m['from_paper'] == '0'}  # beyond the paper
+        self.contenders = [m for m in self.methods + PEERS if select(self.runs, method=m)]
         self.out = []
 
     def w(self, line=''):
@@ -269,7 +278,7 @@ class Report:
         fig, axes = plt.subplots(2, len(params), figsize=(3.2 * len(params), 6))
         for col, p in enumerate(params):
             rows = select(self.sweep, parameter=p)
-            for m in sorted({r['method'] for r in rows}, key=METHODS.index):
+            for m in sorted({r['method'] for r in rows}, key=self.methods.index):
                 vals = sorted({r['value'] for r in select(rows, method=m)})
                 axes[0][col].plot(vals, [score(select(rows, method=m, value=v)) for v in vals],
                                   marker='o', label=m)
@@ -294,7 +303,7 @@ class Report:
         sphere = lambda m: self.clean(object='sphere', method=m)  # noqa: E731
 
         rc_h, rc_s, gf_h = spread(hand('ray-casting')), spread(sphere('ray-casting')), spread(hand('grid-filling'))
-        others = ', '.join(f'{m} {pct(spread(hand(m)))}' for m in RAY_METHODS[1:])
+        others = ', '.join(f'{m} {pct(spread(hand(m)))}' for m in self.ray_methods if m != 'ray-casting')
         holds = rc_h > 2 * gf_h and rc_h > rc_s
         v.append(('C1', 'ray-casting estimates vary with the inner point on non-convex objects',
                   'holds' if holds else 'fails',
@@ -303,7 +312,7 @@ class Report:
                   f'The other ray methods on the hand: {others}.'))
 
         e = {m: (med([r['centroid_error_rel'] for r in hand(m)]),
-                 med([r['centroid_error_rel'] for r in sphere(m)])) for m in RAY_METHODS}
+                 med([r['centroid_error_rel'] for r in sphere(m)])) for m in self.ray_methods}
         holds = e['iterative-ray-casting'][0] < e['ray-casting'][0] and e['iterative-ray-casting'][1] < e['ray-casting'][1]
         v.append(('C2', 'iteration helps', 'holds' if holds else 'fails',
                   f'median centroid error / √area, hand | sphere: ray-casting {pct(e["ray-casting"][0])} | '
@@ -312,9 +321,9 @@ class Report:
                   f'{pct(e["recursive-ray-casting"][1])}; rasterized {pct(e["rasterized-ray-casting"][0])} | '
                   f'{pct(e["rasterized-ray-casting"][1])}.'))
 
-        it = {m: mean([r['iterations'] for r in self.clean(method=m)]) for m in ITERATIVE}
+        it = {m: mean([r['iterations'] for r in self.clean(method=m)]) for m in self.iterative}
         t = {m: med([r['time_us'] for r in self.clean(method=m, resolution=self.resolutions[0])])
-             for m in ITERATIVE}
+             for m in self.iterative}
         holds = it['rasterized-ray-casting'] < it['recursive-ray-casting']
         v.append(('C3', 'rasterization converges in fewer iterations',
                   'holds' if holds else 'fails',
@@ -341,7 +350,7 @@ class Report:
             rows = [r for r in self.runs if r['method'] == m and r['gap_rate'] > 0 and r['spurious'] == 0.0]
             return leak_rate(rows), abs_area_error(rows)
         g_leak, g_err = gap_stats('grid-filling')
-        rays = {m: gap_stats(m) for m in RAY_METHODS}
+        rays = {m: gap_stats(m) for m in self.ray_methods}
         p_leak, p_err = gap_stats('pixel-filling')
         not_more = all(g_leak <= l + 0.02 for l, _ in rays.values())
         far_less = g_leak <= 0.5 * p_leak
@@ -357,11 +366,11 @@ class Report:
                   '(see the sweep), but still more than ray-casting.'))
 
         cheaper = {(m, res): self.time('grid-filling', res) < self.time(m, res)
-                   for m in ITERATIVE for res in self.resolutions}
+                   for m in self.iterative for res in self.resolutions}
         v.append(('C6', 'grid-filling costs less than the iterative ray-casting variants',
                   'holds' if all(cheaper.values()) else ('partly' if any(cheaper.values()) else 'fails'),
                   '; '.join(f'{res}: grid-filling {num(self.time("grid-filling", res), 0)} µs vs '
-                            + ', '.join(f'{m} {num(self.time(m, res), 0)}' for m in ITERATIVE)
+                            + ', '.join(f'{m} {num(self.time(m, res), 0)}' for m in self.iterative)
                             for res in self.resolutions) + ' (median per call).'))
         return v
 
@@ -369,7 +378,7 @@ class Report:
         """Issue 8's targets for gap-tolerant filling, computed from the runs."""
         if not select(self.runs, method=OURS):
             return []
-        others = [m for m in RAY_METHODS + ['grid-filling'] if select(self.runs, method=m)]
+        others = [m for m in self.ray_methods + ['grid-filling'] if select(self.runs, method=m)]
         gaps = [g for g in self.rates if g > 0]
         v = []
         worse = []
@@ -636,7 +645,7 @@ class Report:
         mismatches = []
         for p, (pick, stats, best) in choice.items():
             affects = ', '.join(sorted({r['method'] for r in select(self.sweep, parameter=p)},
-                                       key=METHODS.index))
+                                       key=self.methods.index))
             cells = '; '.join(f'{v:g}: {s:.3f}, {px:.0f}, {t:.0f}' for v, (s, t, px) in stats.items())
             cur = current.get(p)
             if cur is not None and abs(float(cur) - pick) > 1e-9 and p not in HELD:
@@ -683,9 +692,9 @@ class Report:
           'dots: hits; blue: selected blocks; cyan: filled pixels; magenta: the grid; red: the '
           'bounding box and the estimated centroid. Iterative methods show their first and last '
           'iteration.')
-        for meth in METHODS:
+        for meth in self.methods:
             w()
-            w(f'**{meth}**' + (' (ours, beyond the paper)' if meth == OURS else ''))
+            w(f'**{meth}**' + (' (ours, beyond the paper)' if meth in self.ours else ''))
             w()
             for obj in ['sphere', 'hand']:
                 w(f'![{meth} on the {obj}]({fig_rel}/{meth}-{obj}.png)')

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <memory>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "alloc_count.hpp"
+#include "method_list.hpp"
 #include "peers.hpp"
 #include "scene.hpp"
 #include "sequence.hpp"
@@ -181,9 +183,6 @@ std::string projtrack_launch(const std::string& method, const Clip& c) {
          " inner-point-y=" + std::to_string(c.seeds[0].y);
 }
 
-const char* kMethods[] = {
-    "ray-casting",   "iterative-ray-casting", "recursive-ray-casting", "rasterized-ray-casting",
-    "pixel-filling", "grid-filling",          "gap-tolerant-filling"};
 std::string kDefaultMethod;  // the element's own default, read from its property
 
 std::FILE* csv = nullptr;
@@ -231,11 +230,11 @@ void compare_with_peers(Clip& clip, int rounds, int batch, bool have_cvtracker) 
   harnesses.push_back(std::make_unique<Harness>("identity", caps_of("I420", clip)));
   cs.emplace_back("harness alone (identity)",
                   [h = harnesses.back().get(), &clip](int i) { h->run(clip.i420[i]); });
-  for (const char* method : kMethods) {
+  for (const MethodInfo& m : kMethods) {
     harnesses.push_back(
-        std::make_unique<Harness>(projtrack_launch(method, clip), caps_of("I420", clip)));
+        std::make_unique<Harness>(projtrack_launch(m.nick, clip), caps_of("I420", clip)));
     Harness* h = harnesses.back().get();
-    cs.push_back({std::string("projtrack ") + method, [h, &clip](int i) { h->run(clip.i420[i]); }});
+    cs.push_back({std::string("projtrack ") + m.nick, [h, &clip](int i) { h->run(clip.i420[i]); }});
   }
   OpenCvFloodFill flood;
   cv::Mat edges;
@@ -274,8 +273,8 @@ void compare_with_peers(Clip& clip, int rounds, int batch, bool have_cvtracker) 
       r.push_back(ca->per_frame_us[k] / cb->per_frame_us[k]);
     row("ratio", &clip, a + " / " + b, "median", median(r));
   };
-  for (const char* method : kMethods) {
-    const std::string us = std::string("projtrack ") + method;
+  for (const MethodInfo& m : kMethods) {
+    const std::string us = std::string("projtrack ") + m.nick;
     ratio(us, "frame copy");
     ratio("cv::Canny + cv::floodFill", us);
     ratio("cvtracker MOSSE", us);
@@ -294,10 +293,9 @@ void cost_by_object_size(int rounds, bool quick) {
       auto clip = generated_clip(w, h, px / (static_cast<double>(w) * h), 8, 0);  // in place
       std::vector<Contender> cs;
       std::vector<std::unique_ptr<Tracker>> trackers;
-      for (int m = 0; m < kMethodCount; ++m) {
+      for (Method method : kAllMethods) {
         trackers.push_back(std::make_unique<Tracker>());
         Tracker* t = trackers.back().get();
-        const Method method = static_cast<Method>(m);
         TrackerParams tp;
         tp.acquisition = Acquisition::Manual;
         t->seed(clip->seeds[0]);
@@ -326,12 +324,11 @@ long resident_kib() {
 
 void allocations_and_memory(Clip& clip, int frames) {
   const std::size_t n = clip.gray.size();
-  for (int m = 0; m < kMethodCount; ++m) {  // the library alone
+  for (Method method : kAllMethods) {  // the library alone
     Tracker t;
     TrackerParams tp;
     tp.acquisition = Acquisition::Manual;
     t.seed(clip.seeds[0]);
-    const Method method = static_cast<Method>(m);
     auto frame = [&](std::size_t i) {
       const cv::Mat& g = clip.gray[i % n];
       t.track(ImageView(g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step)), EdgeParams{},
@@ -488,8 +485,12 @@ int main(int argc, char** argv) {
       quick = true;
     else if (a == "--clip" && i + 1 < argc)
       clip_path = argv[++i];
-    else {
-      std::fprintf(stderr, "usage: projtrack-speed [--out DIR] [--quick] [--clip FILE]\n");
+    else if (a == "--list-methods") {
+      write_method_list(std::cout);
+      return 0;
+    } else {
+      std::fprintf(stderr,
+                   "usage: projtrack-speed [--out DIR] [--quick] [--clip FILE] [--list-methods]\n");
       return 2;
     }
   }
@@ -502,6 +503,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::fprintf(csv, "section,clip,resolution,what,key,value\n");
+  if (!write_method_list(out)) {
+    std::fprintf(stderr, "projtrack-speed: cannot write %s/methods.csv\n", out.c_str());
+    return 1;
+  }
   GstElementFactory* f = gst_element_factory_find("projtrack");
   if (!f) {
     std::fprintf(stderr, "projtrack-speed: the projtrack element is not found (GST_PLUGIN_PATH)\n");

@@ -2,7 +2,8 @@
 """Writes docs/performance.md from projtrack-speed's measurements (./run bench --speed).
 
 Usage: speed_report.py DATA_DIR OUTPUT.md
-Reads DATA_DIR/speed.csv and DATA_DIR/meta.json; draws DATA_DIR/figures/cost_by_object_size.svg.
+Reads DATA_DIR/speed.csv, DATA_DIR/methods.csv (the table of methods) and DATA_DIR/meta.json;
+draws DATA_DIR/figures/cost_by_object_size.svg.
 Every verdict is computed here from the measurements, never written by hand.
 """
 import csv
@@ -17,8 +18,6 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-METHODS = ["ray-casting", "iterative-ray-casting", "recursive-ray-casting",
-           "rasterized-ray-casting", "pixel-filling", "grid-filling", "gap-tolerant-filling"]
 COPY, HARNESS = "frame copy", "harness alone (identity)"
 PEER_CV, PEER_MOSSE = "cv::Canny + cv::floodFill", "cvtracker MOSSE"
 
@@ -32,6 +31,12 @@ def load(data_dir):
     with open(os.path.join(data_dir, "meta.json")) as f:
         meta = json.load(f)
     return rows, meta
+
+
+def load_methods(data_dir):
+    """The methods' names in the library's order, from the table projtrack-speed wrote."""
+    with open(os.path.join(data_dir, "methods.csv")) as f:
+        return [r["method"] for r in csv.DictReader(f)]
 
 
 def value(rows, section, clip, res, what, key):
@@ -56,10 +61,10 @@ def verdict(ok):
     return "**met**" if ok else "**not met**"
 
 
-def per_frame_table(rows, clip, res):
+def per_frame_table(rows, methods, clip, res):
     out = [f"| contender | per frame (median) | × frame copy | Canny + floodFill ÷ it | MOSSE ÷ it |",
            "|---|---|---|---|---|"]
-    for what in [COPY, HARNESS] + [f"projtrack {m}" for m in METHODS] + [PEER_CV, PEER_MOSSE]:
+    for what in [COPY, HARNESS] + [f"projtrack {m}" for m in methods] + [PEER_CV, PEER_MOSSE]:
         us = value(rows, "per_frame", clip, res, what, "median_us")
         if us is None:
             continue
@@ -85,10 +90,10 @@ def size_rows(rows):
     return out
 
 
-def size_figure(sizes, path):
+def size_figure(sizes, methods, path):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
     for ax, res in zip(axes, ["640x480", "1920x1080"]):
-        for m in METHODS:
+        for m in methods:
             pts = sizes.get((res, m), [])
             if pts:
                 ax.plot([p for p, _ in pts], [u / 1000 for _, u in pts], marker="o", label=m)
@@ -107,13 +112,14 @@ def size_figure(sizes, path):
 def main():
     data_dir, out_md = sys.argv[1], sys.argv[2]
     rows, meta = load(data_dir)
+    methods = load_methods(data_dir)
     global DEFAULT
     DEFAULT = next((r["key"] for r in rows if r["section"] == "meta"
                     and r["what"] == "default method"), "grid-filling")
     os.makedirs(os.path.join(data_dir, "figures"), exist_ok=True)
     sizes = size_rows(rows)
     fig_path = os.path.join(data_dir, "figures", "cost_by_object_size.svg")
-    size_figure(sizes, fig_path)
+    size_figure(sizes, methods, fig_path)
     rel = lambda p: os.path.relpath(p, os.path.dirname(os.path.abspath(out_md)))  # noqa: E731
 
     d = f"projtrack {DEFAULT}"
@@ -125,7 +131,7 @@ def main():
     # Target 4: for the same object, 1080p (6.75× the pixels) against 640×480, per method.
     frame_ratio = 1920 * 1080 / (640 * 480)
     size_lines, worst_frame_growth = [], 0.0
-    for m in METHODS:
+    for m in methods:
         a, b = dict(sizes.get(("640x480", m), [])), dict(sizes.get(("1920x1080", m), []))
         common = sorted(set(a) & set(b))
         if not common:
@@ -216,7 +222,7 @@ def main():
             if value(rows, "per_frame", clip, res, COPY, "median_us") is None:
                 continue
             md.append(f"### {title} — {res.replace('x', '×')}\n")
-            md.append(per_frame_table(rows, clip, res))
+            md.append(per_frame_table(rows, methods, clip, res))
             md.append("")
     md.append("On the real clip nothing tells projtrack what to track: it spends many frames "
               "searching (motion detection and up to 13 candidate fills on whole-frame edges) or "
@@ -237,7 +243,7 @@ def main():
         keys = ["tracked", "refused_as_leak", "lost_otherwise", "searching", "acquisitions"]
         md.append("| method | " + " | ".join(k.replace("_", " ") for k in keys) + " |")
         md.append("|---|" + "---|" * len(keys))
-        for m in METHODS:
+        for m in methods:
             vals = {r["key"]: r["value"] for r in statuses if r["what"] == m}
             if vals:
                 name = f"**{m}**" if m == DEFAULT else m

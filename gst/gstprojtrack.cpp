@@ -151,28 +151,13 @@ static GstStaticPadTemplate sink_template = GST_STATIC_PAD_TEMPLATE(
 static GstStaticPadTemplate src_template = GST_STATIC_PAD_TEMPLATE(
     "src", GST_PAD_SRC, GST_PAD_ALWAYS, GST_STATIC_CAPS(GST_VIDEO_CAPS_MAKE(VIDEO_FORMATS)));
 
+// One value per row of the table of methods (src/method_table.def): its nick and description.
 GType gst_projtrack_method_get_type(void) {
   static GType type = 0;
-  static const GEnumValue values[] = {
-      {static_cast<gint>(Method::RayCasting), "n-ray-casting: mean of n ray hits", "ray-casting"},
-      {static_cast<gint>(Method::IterativeRayCasting),
-       "Iterative n-ray-casting: cast, move toward the centroid, repeat", "iterative-ray-casting"},
-      {static_cast<gint>(Method::RecursiveRayCasting),
-       "Iterative n^y-ray-casting: recast n rays from every hit, y levels deep",
-       "recursive-ray-casting"},
-      {static_cast<gint>(Method::RasterizedRayCasting),
-       "Iterative n^y-ray-casting with m-rasterization: blocks crossed by rays",
-       "rasterized-ray-casting"},
-      {static_cast<gint>(Method::PixelFilling),
-       "Pixel-filling: flood fill up to the edges (exact; leaks through gaps)", "pixel-filling"},
-      {static_cast<gint>(Method::GridFilling),
-       "m-grid-filling: fill along a grid of m×m cells (the paper's proposal)", "grid-filling"},
-      {static_cast<gint>(Method::GapTolerantFilling),
-       "Gap-tolerant filling: m-grid-filling whose lines do not cross gaps of up to max-gap px in "
-       "the contour",
-       "gap-tolerant-filling"},
-      {0, nullptr, nullptr}};
+  static GEnumValue values[projtrack::kMethodCount + 1];  // and the terminating zeros
   if (g_once_init_enter(&type)) {
+    for (const projtrack::MethodInfo& m : projtrack::kMethods)
+      values[static_cast<int>(m.method)] = {static_cast<gint>(m.method), m.description, m.nick};
     g_once_init_leave(&type, g_enum_register_static("GstProjtrackMethod", values));
   }
   return type;

@@ -108,7 +108,7 @@ class Painter {
 void draw_overlay(GstVideoFrame* frame, Method method, const Features& features,
                   const Trace& trace) {
   Painter paint(frame);
-  const bool grid = method == Method::GridFilling || method == Method::GapTolerantFilling;
+  const bool grid = method_info(method).trace == TraceKind::GridLines;
   for (const Trace::Run& run : trace.runs) {
     for (int y = run.first.y; y <= run.last.y; ++y)
       for (int x = run.first.x; x <= run.last.x; ++x) {

@@ -1,13 +1,6 @@
 #include "estimator.hpp"
 
-#include "gap_tolerant_filling.hpp"
-#include "grid_filling.hpp"
 #include "inner_point.hpp"
-#include "iterative_ray_casting.hpp"
-#include "pixel_filling.hpp"
-#include "rasterized_ray_casting.hpp"
-#include "ray_casting.hpp"
-#include "recursive_ray_casting.hpp"
 
 namespace projtrack {
 
@@ -76,23 +69,7 @@ Features Estimator::estimate(const ImageView& edges, Point2i inner_point, const 
 }
 
 std::unique_ptr<Estimator> make_estimator(Method m) {
-  switch (m) {
-    case Method::RayCasting:
-      return std::make_unique<RayCasting>();
-    case Method::IterativeRayCasting:
-      return std::make_unique<IterativeRayCasting>();
-    case Method::RecursiveRayCasting:
-      return std::make_unique<RecursiveRayCasting>();
-    case Method::RasterizedRayCasting:
-      return std::make_unique<RasterizedRayCasting>();
-    case Method::PixelFilling:
-      return std::make_unique<PixelFilling>();
-    case Method::GridFilling:
-      return std::make_unique<GridFilling>();
-    case Method::GapTolerantFilling:
-      return std::make_unique<GapTolerantFilling>();
-  }
-  return nullptr;
+  return is_method(m) ? method_info(m).make() : nullptr;
 }
 
 }  // namespace projtrack

@@ -1,4 +1,4 @@
-// The common interface of the estimators.
+// The common interface of the estimators (one per row of the table of methods, method_table.def).
 #pragma once
 
 #include <memory>
@@ -72,6 +72,8 @@ void Estimator::iterate(const Context& ctx, Features& out, Work& work, bool rece
   out.inner_point = p;
 }
 
+// A new estimator of method `m` (null for an integer that is no Method value): the factory of its
+// row in the table of methods.
 std::unique_ptr<Estimator> make_estimator(Method m);
 
 // The status of an estimate covering `bbox` in a width × height frame: Ok, ReachedBorder (it

@@ -176,4 +176,9 @@ GridFilling::Span GapTolerantFilling::extend(const ImageView& edges, bool vertic
   return {extend(-1), extend(+1)};
 }
 
+template <>
+std::unique_ptr<Estimator> make_estimator<Method::GapTolerantFilling>() {
+  return std::make_unique<GapTolerantFilling>();
+}
+
 }  // namespace projtrack

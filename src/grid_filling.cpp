@@ -87,4 +87,9 @@ void GridFilling::run(const Context& ctx, Features& out, Work& work) {
   reached_.clear(out.bbox);
 }
 
+template <>
+std::unique_ptr<Estimator> make_estimator<Method::GridFilling>() {
+  return std::make_unique<GridFilling>();
+}
+
 }  // namespace projtrack

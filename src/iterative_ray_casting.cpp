@@ -17,4 +17,9 @@ void IterativeRayCasting::run(const Context& ctx, Features& out, Work& work) {
   });
 }
 
+template <>
+std::unique_ptr<Estimator> make_estimator<Method::IterativeRayCasting>() {
+  return std::make_unique<IterativeRayCasting>();
+}
+
 }  // namespace projtrack

@@ -2,35 +2,15 @@
 
 namespace projtrack {
 
-std::string_view method_name(Method m) {
-  switch (m) {
-    case Method::RayCasting:
-      return "ray-casting";
-    case Method::IterativeRayCasting:
-      return "iterative-ray-casting";
-    case Method::RecursiveRayCasting:
-      return "recursive-ray-casting";
-    case Method::RasterizedRayCasting:
-      return "rasterized-ray-casting";
-    case Method::PixelFilling:
-      return "pixel-filling";
-    case Method::GridFilling:
-      return "grid-filling";
-    case Method::GapTolerantFilling:
-      return "gap-tolerant-filling";
-  }
-  return "unknown";
-}
+std::string_view method_name(Method m) { return is_method(m) ? method_info(m).nick : "unknown"; }
 
 std::optional<Method> method_from_name(std::string_view name) {
-  for (Method m : kAllMethods) {
-    if (method_name(m) == name) return m;
+  for (const MethodInfo& info : kMethods) {
+    if (info.nick == name) return info.method;
   }
   return std::nullopt;
 }
 
-bool is_ray_method(Method m) {
-  return m != Method::PixelFilling && m != Method::GridFilling && m != Method::GapTolerantFilling;
-}
+bool is_ray_method(Method m) { return is_method(m) && method_info(m).family == Family::Rays; }
 
 }  // namespace projtrack

@@ -55,4 +55,9 @@ void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
   filled_.clear(out.bbox);
 }
 
+template <>
+std::unique_ptr<Estimator> make_estimator<Method::PixelFilling>() {
+  return std::make_unique<PixelFilling>();
+}
+
 }  // namespace projtrack

@@ -35,4 +35,9 @@ void RasterizedRayCasting::run(const Context& ctx, Features& out, Work& work) {
   out.bbox = bounds.rect();
 }
 
+template <>
+std::unique_ptr<Estimator> make_estimator<Method::RasterizedRayCasting>() {
+  return std::make_unique<RasterizedRayCasting>();
+}
+
 }  // namespace projtrack

@@ -26,4 +26,9 @@ void RayCasting::run(const Context& ctx, Features& out, Work& work) {
   if (ctx.trace) ctx.trace->iterations.push_back({out.seed, out.centroid, out.area});
 }
 
+template <>
+std::unique_ptr<Estimator> make_estimator<Method::RayCasting>() {
+  return std::make_unique<RayCasting>();
+}
+
 }  // namespace projtrack

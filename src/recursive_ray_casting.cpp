@@ -74,4 +74,9 @@ void RecursiveRayCasting::run(const Context& ctx, Features& out, Work& work) {
   out.bbox = bounds.rect();
 }
 
+template <>
+std::unique_ptr<Estimator> make_estimator<Method::RecursiveRayCasting>() {
+  return std::make_unique<RecursiveRayCasting>();
+}
+
 }  // namespace projtrack

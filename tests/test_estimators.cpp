@@ -385,8 +385,23 @@ TEST(Trace, RecordsWhatEachMethodDidAndNothingWithoutOne) {
       EXPECT_GE(trace.rays.size(), 32u) << method_name(m);
       EXPECT_EQ(trace.rays.size(), f.rays_cast) << method_name(m);
     }
-    EXPECT_EQ(trace.blocks.empty(), m != Method::RasterizedRayCasting) << method_name(m);
+    // What the table says the trace holds (the overlay and the figures draw by it).
+    const TraceKind kind = method_info(m).trace;
+    EXPECT_EQ(trace.blocks.empty(), kind != TraceKind::RaysAndBlocks) << method_name(m);
     EXPECT_EQ(trace.runs.empty(), is_ray_method(m)) << method_name(m);
+    const int grid = paper_params().grid_size;
+    for (const Trace::Run& r : trace.runs) {
+      if (kind == TraceKind::FilledPixels) {  // rows of filled pixels
+        EXPECT_EQ(r.first.y, r.last.y) << method_name(m);
+      } else {  // grid lines: rows and columns of the grid anchored at the seed
+        ASSERT_EQ(kind, TraceKind::GridLines) << method_name(m);
+        const bool row = r.first.y == r.last.y && (r.first.y - f.seed.y) % grid == 0;
+        const bool column = r.first.x == r.last.x && (r.first.x - f.seed.x) % grid == 0;
+        EXPECT_TRUE(row || column) << method_name(m);
+      }
+    }
+    // The methods the table calls iterative iterate here (measured: 2 or 3 times); no other does.
+    EXPECT_EQ(f.iterations > 1, method_info(m).iterative) << method_name(m);
     // The same estimate without a trace gives the same features.
     const Features g = make_estimator(m)->estimate(hand.edge_view(), seed, paper_params());
     EXPECT_EQ(g.area, f.area);

@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <set>
 #include <string>
 
+#include "estimator.hpp"
 #include "method.hpp"
 #include "params.hpp"
 #include "status.hpp"
@@ -49,6 +51,34 @@ TEST(Method, NamesRoundTrip) {
   EXPECT_EQ(names.size(), static_cast<std::size_t>(kMethodCount));
   EXPECT_FALSE(method_from_name("flood").has_value());
   EXPECT_EQ(method_name(Method::GridFilling), "grid-filling");
+}
+
+TEST(Method, TheTableHasOneRowPerValueInEnumOrder) {
+  ASSERT_EQ(std::size(kAllMethods), std::size(kMethods));
+  for (int i = 0; i < kMethodCount; ++i) {
+    const MethodInfo& info = kMethods[i];
+    EXPECT_EQ(info.method, kAllMethods[i]);
+    EXPECT_EQ(static_cast<int>(info.method), i);
+    EXPECT_EQ(&method_info(info.method), &info);
+    // GStreamer enum nicks and CSV columns: lower-case words joined by hyphens, no spaces.
+    const std::string_view nick = info.nick;
+    EXPECT_FALSE(nick.empty());
+    EXPECT_EQ(nick.find_first_not_of("abcdefghijklmnopqrstuvwxyz-"), std::string_view::npos)
+        << nick;
+    EXPECT_GT(std::string_view(info.description).size(), 10u) << nick;
+    EXPECT_EQ(info.family == Family::Rays, is_ray_method(info.method)) << nick;
+    ASSERT_NE(info.make, nullptr) << nick;
+    EXPECT_NE(info.make(), nullptr) << nick;
+  }
+}
+
+TEST(Method, AnIntegerThatIsNoMethodHasDefinedAnswers) {
+  const auto bad = static_cast<Method>(kMethodCount);
+  EXPECT_FALSE(is_method(bad));
+  EXPECT_FALSE(is_method(static_cast<Method>(-1)));
+  EXPECT_EQ(method_name(bad), "unknown");
+  EXPECT_FALSE(is_ray_method(bad));
+  EXPECT_EQ(make_estimator(bad), nullptr);
 }
 
 TEST(Status, NamesAreDistinctAndFeaturesOnlyWhereComputed) {

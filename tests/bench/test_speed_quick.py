@@ -17,8 +17,9 @@ os.makedirs(out)
 subprocess.run([speed, '--quick', '--out', out], check=True, timeout=600)
 
 rows = list(csv.DictReader(open(os.path.join(out, 'speed.csv'))))
-methods = ['ray-casting', 'iterative-ray-casting', 'recursive-ray-casting',
-           'rasterized-ray-casting', 'pixel-filling', 'grid-filling', 'gap-tolerant-filling']
+# Every method of the library's table, as the tool wrote it beside its measurements.
+methods = [m['method'] for m in csv.DictReader(open(os.path.join(out, 'methods.csv')))]
+assert len(methods) >= 7, methods
 
 
 def find(section, what, key, res=None, clip='generated'):

@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "method.hpp"
 #include "scenes.hpp"
 #include "sequence.hpp"
 
@@ -229,12 +231,25 @@ TEST_F(Element, WithoutAnInnerPointNoMetaAndTheMessageSaysWhy) {
   gst_buffer_unref(out);
 }
 
+// The element's enum is the library's table of methods: a value per row, same nick and text.
+TEST_F(Element, TheMethodEnumIsTheTableOfMethods) {
+  GParamSpec* spec = g_object_class_find_property(G_OBJECT_GET_CLASS(h_->element), "method");
+  ASSERT_NE(spec, nullptr);
+  GEnumClass* e = G_PARAM_SPEC_ENUM(spec)->enum_class;
+  ASSERT_EQ(e->n_values, static_cast<guint>(projtrack::kMethodCount));
+  for (const projtrack::MethodInfo& m : projtrack::kMethods) {
+    const GEnumValue* v = g_enum_get_value(e, static_cast<gint>(m.method));
+    ASSERT_NE(v, nullptr) << m.nick;
+    EXPECT_STREQ(v->value_nick, m.nick);
+    EXPECT_STREQ(v->value_name, m.description);
+  }
+}
+
 TEST_F(Element, EveryMethodIsSelectable) {
   const DiscFrame scene{200, 160, 100, 80, 35};
   set_caps(scene, "GRAY8");
-  for (const char* method :
-       {"ray-casting", "iterative-ray-casting", "recursive-ray-casting", "rasterized-ray-casting",
-        "pixel-filling", "grid-filling", "gap-tolerant-filling"}) {
+  for (const projtrack::MethodInfo& info : projtrack::kMethods) {
+    const char* method = info.nick;
     gst_util_set_object_arg(G_OBJECT(h_->element), "method", method);
     seed(100, 80);  // the centre: plain ray-casting is biased from anywhere else
     gst_buffer_unref(push(scene.gray8()));
@@ -461,7 +476,7 @@ TEST_F(Element, AutoAcquisitionPoseAndOnePush) {
   double depth_max = 0;
   for (int i = 0; i < 75; ++i) {
     const auto spec = projtrack::bench::frame_at(projtrack::bench::Object::Sphere,
-                                                 300 + std::min(i, 10) * 3.0, 240, i, scale(i));
+                                                     300 + std::min(i, 10) * 3.0, 240, i, scale(i));
     const projtrack::bench::Scene s = projtrack::bench::make_scene(spec, {});
     GstBuffer* buf = gst_buffer_new_memdup(s.image.data, s.image.total());
     gst_buffer_unref(push(buf, i));
@@ -498,13 +513,21 @@ bool same_bytes(GstBuffer* a, GstBuffer* b) {
   return same;
 }
 
+// The overlay draws by what the trace holds: one method of each kind covers every way it draws.
+std::vector<const char*> one_method_per_trace_kind() {
+  std::vector<const char*> methods;
+  std::set<projtrack::TraceKind> kinds;
+  for (const projtrack::MethodInfo& m : projtrack::kMethods)
+    if (kinds.insert(m.trace).second) methods.push_back(m.nick);
+  return methods;
+}
+
 TEST_F(Element, OverlayChangesPixelsOnlyWhenDrawIsOn) {
   const DiscFrame scene{161, 121, 80, 60, 30};
   for (const char* format : kFormats) {
     SCOPED_TRACE(format);
     set_caps(scene, format);
-    for (const char* method :
-         {"grid-filling", "pixel-filling", "rasterized-ray-casting", "ray-casting"}) {
+    for (const char* method : one_method_per_trace_kind()) {
       gst_util_set_object_arg(G_OBJECT(h_->element), "method", method);
       for (gboolean draw : {0, 1}) {
         seed(scene.cx, scene.cy);

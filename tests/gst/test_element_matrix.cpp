@@ -16,7 +16,14 @@
 #include <thread>
 #include <vector>
 
+#include "method.hpp"
+
 namespace {
+
+using projtrack::kMethodCount;
+using projtrack::kMethods;
+using projtrack::Method;
+using projtrack::method_name;
 
 struct GstEnvironment : ::testing::Environment {
   void SetUp() override { gst_init(nullptr, nullptr); }
@@ -215,7 +222,9 @@ TEST_F(Matrix, EveryNumericPropertyAtItsMinimumAndMaximum) {
       continue;
     }
     for (const GValue* v : {&lo, &hi}) {
-      for (const char* method : {"grid-filling", "rasterized-ray-casting"}) {
+      // A fill and a ray method: between them, every parameter is read.
+      for (Method m : {Method::GridFilling, Method::RasterizedRayCasting}) {
+        const char* method = method_name(m).data();
         SCOPED_TRACE(std::string(p->name) + " = " + g_strdup_value_contents(v) + ", " + method);
         gst_util_set_object_arg(G_OBJECT(h_->element), "method", method);
         g_object_set_property(G_OBJECT(h_->element), p->name, v);
@@ -240,16 +249,13 @@ TEST_F(Matrix, PropertiesChangedFromAnotherThreadWhileBuffersFlow) {
   std::atomic<bool> done{false};
   std::thread poker([&] {
     std::mt19937 rng(4);
-    const char* methods[] = {
-        "ray-casting",   "iterative-ray-casting", "recursive-ray-casting", "rasterized-ray-casting",
-        "pixel-filling", "grid-filling",          "gap-tolerant-filling"};
     const char* detectors[] = {"canny", "sobel", "input"};
     const char* acquisitions[] = {"manual", "center", "auto"};
     while (!done) {
       GObject* e = G_OBJECT(h_->element);
       switch (rng() % 8) {
         case 0:
-          gst_util_set_object_arg(e, "method", methods[rng() % 7]);
+          gst_util_set_object_arg(e, "method", kMethods[rng() % kMethodCount].nick);
           break;
         case 1:
           gst_util_set_object_arg(e, "edge-detector", detectors[rng() % 3]);
