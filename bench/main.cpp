@@ -36,6 +36,18 @@
 namespace projtrack::bench {
 namespace {
 
+using synthetic::frame_at;
+using synthetic::make_scene;
+using synthetic::Object;
+using synthetic::object_name;
+using synthetic::Part;
+using synthetic::run_sequence;
+using synthetic::sample_seeds;
+using synthetic::Scene;
+using synthetic::SceneSpec;
+using synthetic::Seed;
+using synthetic::truth_is_consistent;
+
 constexpr double kLeakFactor = 1.5;  // an estimate above 1.5× the true area leaked
 
 struct Options {

@@ -31,6 +31,12 @@
 namespace projtrack::bench {
 namespace {
 
+using synthetic::frame_at;
+using synthetic::make_scene;
+using synthetic::Object;
+using synthetic::Scene;
+using synthetic::SceneSpec;
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {

@@ -13,14 +13,14 @@
 namespace projtrack {
 namespace {
 
-using bench::Object;
-using bench::SceneSpec;
-using Step = bench::SequenceStep;
+using synthetic::Object;
+using synthetic::SceneSpec;
+using Step = synthetic::SequenceStep;
 
 constexpr double kFps = 30;
 
-using bench::frame_at;
-using bench::run_sequence;
+using synthetic::frame_at;
+using synthetic::run_sequence;
 
 TEST(TrackingSequences, AMovingHandIsAcquiredAndKeptOnEveryFrame) {
   const auto spec = [](int i) {
@@ -169,8 +169,8 @@ TEST(TrackingSequences, EdgesAroundTheObjectAloneChangeNothing) {
     double x = 300;
     for (int i = 0; i < 30; ++i) {
       x += i < 15 ? 4 : (i % 2 ? 50 : -35);  // steady, then jumps back and forth
-      const bench::Scene s =
-          bench::make_scene(frame_at(Object::Hand, x, 240 + 2.0 * i, i), EdgeParams{});
+      const synthetic::Scene s =
+          synthetic::make_scene(frame_at(Object::Hand, x, 240 + 2.0 * i, i), EdgeParams{});
       const ImageView gray(s.image.data, s.image.cols, s.image.rows, s.image.step);
       const TrackResult ra = a.track(gray, EdgeParams{}, i / kFps, m, {}, around);
       const TrackResult rb = b.track(gray, EdgeParams{}, i / kFps, m, {}, whole);

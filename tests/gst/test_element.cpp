@@ -475,9 +475,9 @@ TEST_F(Element, AutoAcquisitionPoseAndOnePush) {
   int tracked = 0, pushes = 0, acquired = 0;
   double depth_max = 0;
   for (int i = 0; i < 75; ++i) {
-    const auto spec = projtrack::bench::frame_at(projtrack::bench::Object::Sphere,
+    const auto spec = projtrack::synthetic::frame_at(projtrack::synthetic::Object::Sphere,
                                                      300 + std::min(i, 10) * 3.0, 240, i, scale(i));
-    const projtrack::bench::Scene s = projtrack::bench::make_scene(spec, {});
+    const projtrack::synthetic::Scene s = projtrack::synthetic::make_scene(spec, {});
     GstBuffer* buf = gst_buffer_new_memdup(s.image.data, s.image.total());
     gst_buffer_unref(push(buf, i));
     GstMessage* m = message();

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace projtrack::bench {
+namespace projtrack::synthetic {
 
 std::vector<SequenceStep> run_sequence(int n, const std::function<SceneSpec(int)>& spec,
                                        const TrackerParams& tp, std::optional<Point2i> seed,
@@ -37,4 +37,4 @@ SceneSpec frame_at(Object o, double x, double y, int frame, double scale) {
   return s;
 }
 
-}  // namespace projtrack::bench
+}  // namespace projtrack::synthetic

@@ -9,7 +9,7 @@
 #include "scene.hpp"
 #include "tracker.hpp"
 
-namespace projtrack::bench {
+namespace projtrack::synthetic {
 
 struct SequenceStep {
   double true_area = 0;  // 0 when the object is out of the frame
@@ -28,4 +28,4 @@ std::vector<SequenceStep> run_sequence(int n, const std::function<SceneSpec(int)
 // A frame's spec with the object at (x, y), fresh sensor noise per frame.
 SceneSpec frame_at(Object o, double x, double y, int frame, double scale = 1.0);
 
-}  // namespace projtrack::bench
+}  // namespace projtrack::synthetic

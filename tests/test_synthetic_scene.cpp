@@ -1,4 +1,5 @@
-// The benchmark's scenes: exact truth, the edge miscalculations asked for, seeds inside.
+// The synthetic scenes (the benchmark's and the sequence tests'): exact truth, the edge
+// miscalculations asked for, seeds inside.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,10 +10,10 @@
 #include "estimator.hpp"
 #include "scene.hpp"
 
-namespace projtrack::bench {
+namespace projtrack::synthetic {
 namespace {
 
-TEST(BenchScene, TruthAgreesWithIndependentCountsAtBothResolutions) {
+TEST(SyntheticScene, TruthAgreesWithIndependentCountsAtBothResolutions) {
   for (auto [w, h] : {std::pair{640, 480}, std::pair{1920, 1080}}) {
     for (Object o : {Object::Sphere, Object::Hand}) {
       const Scene s = make_scene({w, h, o, 0, false, 0}, EdgeParams{});
@@ -30,7 +31,7 @@ TEST(BenchScene, TruthAgreesWithIndependentCountsAtBothResolutions) {
 }
 
 // Without deliberate gaps, the edges close the object: a fill from inside stays inside.
-TEST(BenchScene, ClosedContoursAreClosed) {
+TEST(SyntheticScene, ClosedContoursAreClosed) {
   auto fill = make_estimator(Method::PixelFilling);
   for (auto [w, h] : {std::pair{640, 480}, std::pair{1920, 1080}})
     for (Object o : {Object::Sphere, Object::Hand})
@@ -46,7 +47,7 @@ TEST(BenchScene, ClosedContoursAreClosed) {
       }
 }
 
-TEST(BenchScene, GapsRemoveTheRequestedShareOfTheContour) {
+TEST(SyntheticScene, GapsRemoveTheRequestedShareOfTheContour) {
   for (double rate : {0.01, 0.05, 0.10}) {
     const Scene s = make_scene({640, 480, Object::Hand, rate, false, 0}, EdgeParams{});
     EXPECT_NEAR(s.gap_pixels_removed, rate * s.contour_pixels, 2.0) << rate;
@@ -55,13 +56,13 @@ TEST(BenchScene, GapsRemoveTheRequestedShareOfTheContour) {
   }
 }
 
-TEST(BenchScene, SpuriousEdgesLandInsideTheObject) {
+TEST(SyntheticScene, SpuriousEdgesLandInsideTheObject) {
   const Scene s = make_scene({640, 480, Object::Sphere, 0, true, 0}, EdgeParams{});
   EXPECT_GT(s.spurious_pixels, 50);
   EXPECT_EQ(make_scene({640, 480, Object::Sphere, 0, false, 0}, EdgeParams{}).spurious_pixels, 0);
 }
 
-TEST(BenchScene, SeedsCoverEveryPartOfTheHandAndLieInside) {
+TEST(SyntheticScene, SeedsCoverEveryPartOfTheHandAndLieInside) {
   const Scene s = make_scene({640, 480, Object::Hand, 0, false, 0}, EdgeParams{});
   std::mt19937 rng(5);
   const std::vector<Seed> seeds = sample_seeds(s, 24, rng);
@@ -75,4 +76,4 @@ TEST(BenchScene, SeedsCoverEveryPartOfTheHandAndLieInside) {
 }
 
 }  // namespace
-}  // namespace projtrack::bench
+}  // namespace projtrack::synthetic

@@ -1,5 +1,6 @@
-// Benchmark scenes: rendered camera-like frames of a shaded sphere or a five-finger hand, their
-// edges with deliberate miscalculations, and exact ground truth.
+// Synthetic scenes, shared by the benchmark and the tests: rendered camera-like frames of a shaded
+// sphere or a five-finger hand, their edges with deliberate miscalculations, and exact ground
+// truth.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -11,7 +12,7 @@
 #include "edge_detection.hpp"
 #include "geometry.hpp"
 
-namespace projtrack::bench {
+namespace projtrack::synthetic {
 
 enum class Object { Sphere, Hand };
 const char* object_name(Object o);
@@ -85,4 +86,4 @@ struct Seed {
 // share, not just the palm).
 std::vector<Seed> sample_seeds(const Scene& s, int total, std::mt19937& rng);
 
-}  // namespace projtrack::bench
+}  // namespace projtrack::synthetic

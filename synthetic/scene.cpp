@@ -4,7 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-namespace projtrack::bench {
+namespace projtrack::synthetic {
 
 namespace {
 
@@ -303,4 +303,4 @@ std::vector<Seed> sample_seeds(const Scene& s, int total, std::mt19937& rng) {
   return seeds;
 }
 
-}  // namespace projtrack::bench
+}  // namespace projtrack::synthetic
