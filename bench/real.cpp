@@ -390,10 +390,25 @@ std::string seed_props(const Clip& c) {
 
 // Every tracker over the clip, frame by frame, their order rotated on every frame so a noisy
 // machine slows all of them alike.
+// The nick of the element's default method, read from its property.
+std::string default_method() {
+  GstElement* e = gst_element_factory_make("projtrack", nullptr);
+  GParamSpec* spec = g_object_class_find_property(G_OBJECT_GET_CLASS(e), "method");
+  const GValue* def = g_param_spec_get_default_value(spec);
+  const GEnumValue* v =
+      g_enum_get_value(G_PARAM_SPEC_ENUM(spec)->enum_class, g_value_get_enum(def));
+  std::string nick = v ? v->value_nick : "";
+  gst_object_unref(e);
+  return nick;
+}
+
+bool only_default = false;  // --only-default: the element's default method and no seed alone
+
 void run_all(const Clip& c, Progress& progress) {
   std::vector<std::pair<Tracker, std::string>> ts;  // tracker, group
   if (!c.truth.empty()) {
     for (Method m : kAllMethods) {
+      if (only_default && method_name(m) != default_method()) continue;
       const std::string method(method_name(m));
       ts.push_back(
           {projtrack_tracker(c, "projtrack " + method, "method=" + method + " " + seed_props(c)),
@@ -401,7 +416,7 @@ void run_all(const Clip& c, Progress& progress) {
     }
   }
   ts.push_back({projtrack_tracker(c, "projtrack no seed", ""), "projtrack no seed"});
-  if (!c.truth.empty()) {
+  if (!c.truth.empty() && !only_default) {
     if (GstElementFactory* f = gst_element_factory_find("cvtracker")) {
       gst_object_unref(f);
       for (const char* a : {"MOSSE", "KCF", "CSRT", "MedianFlow"})
@@ -505,18 +520,6 @@ void speed_1080p(const Clip& c, Progress& progress) {
   row("harness alone (identity)", t_identity);
 }
 
-// The nick of the element's default method, read from its property.
-std::string default_method() {
-  GstElement* e = gst_element_factory_make("projtrack", nullptr);
-  GParamSpec* spec = g_object_class_find_property(G_OBJECT_GET_CLASS(e), "method");
-  const GValue* def = g_param_spec_get_default_value(spec);
-  const GEnumValue* v =
-      g_enum_get_value(G_PARAM_SPEC_ENUM(spec)->enum_class, g_value_get_enum(def));
-  std::string nick = v ? v->value_nick : "";
-  gst_object_unref(e);
-  return nick;
-}
-
 void write_meta(const std::string& dir, const std::vector<std::unique_ptr<Clip>>& clips) {
   std::ofstream meta(dir + "/meta.json");
   meta << "{\n  \"measured\": \"" << utc_now() << "\",\n  \"cpu\": \"" << cpu_model()
@@ -551,15 +554,18 @@ int main(int argc, char** argv) {
       truth_dir = argv[++i];
     } else if (a == "--frames" && i + 1 < argc) {
       max_frames = std::atoi(argv[++i]);
+    } else if (a == "--only-default") {
+      only_default = true;
     } else if (a == "--no-draw") {
       draw = false;
     } else if (a == "--clip" && i + 1 < argc && std::strchr(argv[i + 1], '=')) {
       const std::string v = argv[++i];
       clip_args.push_back({v.substr(0, v.find('=')), v.substr(v.find('=') + 1)});
     } else {
-      std::fprintf(stderr,
-                   "usage: projtrack-real --out DIR [--truth DIR] [--frames N] [--no-draw] "
-                   "--clip NAME=FILE...\n");
+      std::fprintf(
+          stderr,
+          "usage: projtrack-real --out DIR [--truth DIR] [--frames N] [--no-draw] [--only-default] "
+          "--clip NAME=FILE...\n");
       return 2;
     }
   }

@@ -57,7 +57,7 @@
 #include <vector>
 
 #include "edge_detection.hpp"
-#include "frame_gray.hpp"
+#include "frame_color.hpp"
 #include "overlay.hpp"
 #include "sample_clock.hpp"
 #include "tracker.hpp"
@@ -69,6 +69,7 @@ using projtrack::Acquisition;
 using projtrack::EdgeDetector;
 using projtrack::Features;
 using projtrack::Method;
+using projtrack::ObjectModelKind;
 using projtrack::Status;
 using projtrack::TrackResult;
 
@@ -96,7 +97,7 @@ enum class SeedCommand { None, Seed, Reset };
 struct Stream {
   projtrack::Tracker tracker;
   projtrack::Trace trace;
-  std::vector<std::uint8_t> gray;  // packed RGB frames converted to gray
+  std::vector<std::uint8_t> converted;  // packed RGB frames converted to luma and chroma
   int width = 0, height = 0;
   int black_level = 0;  // of edge-detector=input: 16 in limited-range YUV
   guint64 frames = 0;   // for buffers without timestamps
@@ -131,6 +132,7 @@ enum {
   PROP_INNER_POINT_Y,
   PROP_DRAW,
   PROP_POST_MESSAGES,
+  PROP_OBJECT_MODEL,
   PROP_ACQUISITION,
   PROP_LEAK_FACTOR,
   PROP_SMOOTHING,
@@ -189,6 +191,22 @@ GType gst_projtrack_acquisition_get_type(void) {
       {0, nullptr, nullptr}};
   if (g_once_init_enter(&type)) {
     g_once_init_leave(&type, g_enum_register_static("GstProjtrackAcquisition", values));
+  }
+  return type;
+}
+
+GType gst_projtrack_object_model_get_type(void) {
+  static GType type = 0;
+  static const GEnumValue values[] = {
+      {static_cast<gint>(ObjectModelKind::Edges),
+       "Edges: the paper's tracker, the estimator on the edge image alone", "edges"},
+      {static_cast<gint>(ObjectModelKind::Appearance),
+       "Appearance: the whole object's silhouette from its colours, its edges and its motion; "
+       "the estimator runs on its outline",
+       "appearance"},
+      {0, nullptr, nullptr}};
+  if (g_once_init_enter(&type)) {
+    g_once_init_leave(&type, g_enum_register_static("GstProjtrackObjectModel", values));
   }
   return type;
 }
@@ -265,6 +283,9 @@ static void gst_projtrack_set_property(GObject* object, guint prop_id, const GVa
       break;
     case PROP_POST_MESSAGES:
       s.post_messages = g_value_get_boolean(value);
+      break;
+    case PROP_OBJECT_MODEL:
+      s.tracker.model = static_cast<ObjectModelKind>(g_value_get_enum(value));
       break;
     case PROP_ACQUISITION:
       s.tracker.acquisition = static_cast<Acquisition>(g_value_get_enum(value));
@@ -344,6 +365,9 @@ static void gst_projtrack_get_property(GObject* object, guint prop_id, GValue* v
       break;
     case PROP_POST_MESSAGES:
       g_value_set_boolean(value, s.post_messages);
+      break;
+    case PROP_OBJECT_MODEL:
+      g_value_set_enum(value, static_cast<gint>(s.tracker.model));
       break;
     case PROP_ACQUISITION:
       g_value_set_enum(value, static_cast<gint>(s.tracker.acquisition));
@@ -506,7 +530,7 @@ static TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Setti
     st.tracker.reset();
   projtrack::EdgeParams edge_params = s.edges;
   edge_params.input_black_level = st.black_level;
-  const projtrack::ImageView gray = projtrack::gst::frame_gray(frame, st.gray);
+  const projtrack::ColorView color = projtrack::gst::frame_color(frame, st.converted);
   projtrack::Trace* trace = s.draw ? &st.trace : nullptr;
   // Seconds for the smoothing and the push detector: the buffer's time, else the assumed rate.
   const GstClockTime pts = GST_BUFFER_PTS(frame->buffer);
@@ -515,7 +539,7 @@ static TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Setti
                        : static_cast<double>(st.frames) / projtrack::kAssumedFrameRate;
   ++st.frames;
   // The tracker computes the edges itself: while tracking, only around the object.
-  TrackResult r = st.tracker.track(gray, edge_params, t, s.method, s.params, s.tracker, trace);
+  TrackResult r = st.tracker.track(color, edge_params, t, s.method, s.params, s.tracker, trace);
   if (s.draw) {
     projtrack::gst::draw_overlay(frame, s.method, r.features, st.trace);
     if (st.trace.rays_not_recorded)
@@ -672,6 +696,11 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
       g_param_spec_boolean("post-messages", "Post messages",
                            "Post a projtrack element message for every frame", TRUE, flags);
   const projtrack::TrackerParams tp;
+  properties[PROP_OBJECT_MODEL] = g_param_spec_enum(
+      "object-model", "Object model",
+      "What the tracker knows of the object: its edges alone (the paper's tracker) or its "
+      "appearance (colours against its surroundings, edges and motion: for real footage)",
+      GST_TYPE_PROJTRACK_OBJECT_MODEL, static_cast<gint>(tp.model), flags);
   properties[PROP_ACQUISITION] = g_param_spec_enum(
       "acquisition", "Acquisition",
       "How tracking starts (and restarts after a loss) when no inner point is given",
@@ -713,5 +742,6 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
 
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_METHOD, static_cast<GstPluginAPIFlags>(0));
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_ACQUISITION, static_cast<GstPluginAPIFlags>(0));
+  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_OBJECT_MODEL, static_cast<GstPluginAPIFlags>(0));
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_EDGE_DETECTOR, static_cast<GstPluginAPIFlags>(0));
 }

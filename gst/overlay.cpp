@@ -14,8 +14,9 @@ struct Rgb {
   std::uint8_t r, g, b;
 };
 
-constexpr Rgb kFill{0, 255, 255}, kGrid{255, 0, 255}, kBlock{64, 128, 255}, kRay{0, 255, 0},
-    kHit{255, 255, 0}, kBox{255, 0, 0}, kCentroid{255, 0, 0}, kInnerPoint{255, 255, 0};
+constexpr Rgb kOutline{0, 255, 0}, kFill{0, 255, 255}, kGrid{255, 0, 255}, kBlock{64, 128, 255},
+    kRay{0, 255, 0}, kHit{255, 255, 0}, kBox{255, 0, 0}, kCentroid{255, 0, 0},
+    kInnerPoint{255, 255, 0};
 
 // Writes colours into any 8-bit planar, semi-planar or packed format, one component at a time.
 class Painter {
@@ -129,6 +130,11 @@ void draw_overlay(GstVideoFrame* frame, Method method, const Features& features,
     if (r.iteration == last && last > 0) paint.line(r.origin, r.hit, kRay);
   for (const Trace::Ray& r : trace.rays)
     if (r.iteration == last && last > 0) paint.square(round_to_pixel(r.hit), 1, kHit);
+  // The silhouette the estimator ran on (appearance model), two pixels wide to stay visible.
+  for (const Point2i& p : trace.outline) {
+    paint.set(p.x, p.y, kOutline);
+    paint.set(p.x + 1, p.y, kOutline);
+  }
   if (features.valid()) {
     paint.outline(features.bbox, kBox);
     paint.cross(features.centroid, 6, kCentroid);

@@ -28,4 +28,19 @@ void packed_rgb_to_gray(const std::uint8_t* r, const std::uint8_t* g, const std:
     convert<3>(r, g, b, row_stride, width, height, gray, gray_stride);
 }
 
+void packed_rgb_to_chroma(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b,
+                          int pixel_stride, std::ptrdiff_t row_stride, int width, int height,
+                          std::uint8_t* u, std::uint8_t* v, std::ptrdiff_t chroma_stride) {
+  for (int y = 0; y < height; y += 2) {
+    const std::ptrdiff_t row = y * row_stride;
+    std::uint8_t* uo = u + (y / 2) * chroma_stride;
+    std::uint8_t* vo = v + (y / 2) * chroma_stride;
+    for (int x = 0; x < width; x += 2) {
+      const std::ptrdiff_t i = row + static_cast<std::ptrdiff_t>(x) * pixel_stride;
+      uo[x / 2] = u_of(r[i], g[i], b[i]);
+      vo[x / 2] = v_of(r[i], g[i], b[i]);
+    }
+  }
+}
+
 }  // namespace projtrack

@@ -1,4 +1,4 @@
-// Packed RGB of any component order to 8-bit gray, for frames that have no luma plane.
+// Packed RGB of any component order to 8-bit gray and chroma, for frames that have no YUV planes.
 #pragma once
 
 #include <cstddef>
@@ -16,5 +16,19 @@ constexpr std::uint8_t gray_of(int r, int g, int b) {
 void packed_rgb_to_gray(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b,
                         int pixel_stride, std::ptrdiff_t row_stride, int width, int height,
                         std::uint8_t* gray, std::ptrdiff_t gray_stride);
+
+// The chroma of one RGB pixel, BT.601 full range: Cb = U and Cr = V, 128 for a neutral colour.
+constexpr std::uint8_t u_of(int r, int g, int b) {
+  return static_cast<std::uint8_t>(((-43 * r - 85 * g + 128 * b + 128) >> 8) + 128);
+}
+constexpr std::uint8_t v_of(int r, int g, int b) {
+  return static_cast<std::uint8_t>(((128 * r - 107 * g - 21 * b + 128) >> 8) + 128);
+}
+
+// u_of() and v_of() at half resolution, as I420 stores chroma: of the top-left pixel of every
+// 2×2 block, into planes of (width + 1) / 2 × (height + 1) / 2 with row stride `chroma_stride`.
+void packed_rgb_to_chroma(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b,
+                          int pixel_stride, std::ptrdiff_t row_stride, int width, int height,
+                          std::uint8_t* u, std::uint8_t* v, std::ptrdiff_t chroma_stride);
 
 }  // namespace projtrack

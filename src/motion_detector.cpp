@@ -31,6 +31,7 @@ bool MotionDetector::update(const ImageView& gray, const Params& p, Motion& out)
   width_ = gray.width;
   height_ = gray.height;
   step_ = step;
+  out.step = step;
   if (!comparable) return false;
   out.fraction = static_cast<double>(out.points.size()) / (static_cast<double>(cols) * rows);
   if (!out.points.empty()) out.centroid = {sx / out.points.size(), sy / out.points.size()};

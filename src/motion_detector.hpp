@@ -20,6 +20,7 @@ class MotionDetector {
     double fraction = 0;          // of the sampled pixels that changed
     Point2d centroid;             // of the changed samples (valid when fraction > 0)
     std::vector<Point2i> points;  // the changed samples, in frame coordinates
+    int step = 1;                 // the samples' spacing, px (Params::step)
   };
 
   // Compares `gray` with the previous frame and keeps it for the next call. Returns false (and

@@ -38,6 +38,9 @@ struct Trace {
   std::vector<Block> blocks;
   std::vector<Run> runs;  // pixel-filling: row runs; grid-filling: grid-line runs
   std::vector<Iteration> iterations;
+  // The object's silhouette outline, in frame coordinates, when the tracker found one (the
+  // appearance model); translate() leaves it alone.
+  std::vector<Point2i> outline;
 
   void add_ray(const Ray& r) {
     if (rays.size() < kMaxRays)
@@ -69,12 +72,22 @@ struct Trace {
     }
   }
 
+  // Adds what `other` recorded (another estimate on the same frame).
+  void append(const Trace& other) {
+    for (const Ray& r : other.rays) add_ray(r);
+    rays_not_recorded += other.rays_not_recorded;
+    blocks.insert(blocks.end(), other.blocks.begin(), other.blocks.end());
+    runs.insert(runs.end(), other.runs.begin(), other.runs.end());
+    iterations.insert(iterations.end(), other.iterations.begin(), other.iterations.end());
+  }
+
   void clear() {
     rays_not_recorded = 0;
     rays.clear();
     blocks.clear();
     runs.clear();
     iterations.clear();
+    outline.clear();
   }
 };
 

@@ -1,0 +1,60 @@
+#include "frame_color.hpp"
+
+#include "gray_conversion.hpp"
+
+namespace projtrack::gst {
+
+bool has_luma_plane(GstVideoFormat format) {
+  switch (format) {
+    case GST_VIDEO_FORMAT_GRAY8:
+    case GST_VIDEO_FORMAT_I420:
+    case GST_VIDEO_FORMAT_YV12:
+    case GST_VIDEO_FORMAT_NV12:
+    case GST_VIDEO_FORMAT_NV21:
+    case GST_VIDEO_FORMAT_Y42B:
+    case GST_VIDEO_FORMAT_Y444:
+      return true;
+    default:
+      return false;
+  }
+}
+
+ColorView frame_color(const GstVideoFrame* frame, std::vector<std::uint8_t>& buffer) {
+  const int width = GST_VIDEO_FRAME_WIDTH(frame), height = GST_VIDEO_FRAME_HEIGHT(frame);
+  const GstVideoFormatInfo* info = frame->info.finfo;
+  if (has_luma_plane(GST_VIDEO_FRAME_FORMAT(frame))) {
+    ColorView c;
+    c.luma = ImageView(static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame, 0)),
+                       width, height, GST_VIDEO_FRAME_PLANE_STRIDE(frame, 0));
+    if (GST_VIDEO_FRAME_N_COMPONENTS(frame) >= 3) {
+      // Components 1 and 2 are U and V whatever their planes (YV12 swaps them, NV12 interleaves).
+      c.chroma.u = static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, 1));
+      c.chroma.v = static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, 2));
+      c.chroma.stride = GST_VIDEO_FRAME_COMP_STRIDE(frame, 1);
+      c.chroma.pixel_stride = GST_VIDEO_FRAME_COMP_PSTRIDE(frame, 1);
+      c.chroma.shift_x = GST_VIDEO_FORMAT_INFO_W_SUB(info, 1);
+      c.chroma.shift_y = GST_VIDEO_FORMAT_INFO_H_SUB(info, 1);
+    }
+    return c;
+  }
+  // Packed RGB: components 0, 1, 2 are R, G, B whatever their order in memory.
+  const std::size_t luma = static_cast<std::size_t>(width) * height;
+  const int cw = (width + 1) / 2, ch = (height + 1) / 2;
+  const std::size_t chroma = static_cast<std::size_t>(cw) * ch;
+  buffer.resize(luma + 2 * chroma);
+  const auto comp = [&](int i) {
+    return static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, i));
+  };
+  const int pstride = GST_VIDEO_FRAME_COMP_PSTRIDE(frame, 0);
+  const std::ptrdiff_t stride = GST_VIDEO_FRAME_COMP_STRIDE(frame, 0);
+  packed_rgb_to_gray(comp(0), comp(1), comp(2), pstride, stride, width, height, buffer.data(),
+                     width);
+  packed_rgb_to_chroma(comp(0), comp(1), comp(2), pstride, stride, width, height,
+                       buffer.data() + luma, buffer.data() + luma + chroma, cw);
+  ColorView c;
+  c.luma = ImageView(buffer.data(), width, height, width);
+  c.chroma = {buffer.data() + luma, buffer.data() + luma + chroma, cw, 1, 1, 1};
+  return c;
+}
+
+}  // namespace projtrack::gst

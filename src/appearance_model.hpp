@@ -1,0 +1,62 @@
+// The object's colours against its surroundings': a per-pixel object likelihood, learned from the
+// silhouette and a ring around it, as colour-based model-free trackers do (Possegger et al., "In
+// Defense of Color-based Model-free Tracking", CVPR 2015).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "color_view.hpp"
+#include "geometry.hpp"
+#include "mask.hpp"
+
+namespace projtrack {
+
+class AppearanceModel {
+ public:
+  // Colour bins: 8 of luma (32 levels each) × 32 of Cr × 32 of Cb (8 levels each), so that a
+  // dark neutral object and a dark reddish hand fall apart; gray frames use 64 bins of luma alone.
+  static constexpr int kBins = 8 * 32 * 32;
+
+  static int bin(std::uint8_t y, std::uint8_t u, std::uint8_t v) {
+    return ((y >> 5) << 10) | ((v >> 3) << 5) | (u >> 3);
+  }
+
+  // Forgets everything.
+  void reset();
+  bool empty() const { return object_total_ <= 0; }
+
+  // Counts the colours of `object` (its set pixels) and of `surroundings` in `frame`, and blends
+  // them into the model: rate 1 replaces what it knew, a small rate adapts it slowly.
+  void learn(const ColorView& frame, const Mask& object, const Mask& surroundings, double rate);
+
+  // P(object | colour) of every pixel of `roi` (clipped to the frame), scaled to 0–255, into
+  // `out` (roi.width × roi.height, row stride roi.width): a colour seen mostly on the object
+  // scores high, one seen mostly around it or never seen scores low.
+  void likelihood(const ColorView& frame, const Rect& roi, std::vector<std::uint8_t>& out) const;
+  // 1 for every pixel of `roi` whose colour the model has seen (on the object or around it), 0
+  // for a colour it knows nothing of; same layout as likelihood().
+  void seen(const ColorView& frame, const Rect& roi, std::vector<std::uint8_t>& out) const;
+  // The same for one colour.
+  std::uint8_t likelihood(std::uint8_t y, std::uint8_t u, std::uint8_t v) const {
+    return lut_[index(y, u, v)];
+  }
+
+ private:
+  int index(std::uint8_t y, std::uint8_t u, std::uint8_t v) const {
+    return chroma_ ? bin(y, u, v) : y >> 2;
+  }
+  void count(const ColorView& frame, const Mask& m, std::vector<float>& hist) const;
+  void rebuild();
+  // Calls f(bin, x) for every pixel of row y of `r` (clipped to the frame).
+  template <class F>
+  void for_each_bin(const ColorView& frame, const Rect& r, int y, F&& f) const;
+
+  bool chroma_ = true;
+  std::vector<float> object_, surroundings_, scratch_;  // counts per bin
+  double object_total_ = 0;
+  std::array<std::uint8_t, kBins> lut_{}, seen_{};
+};
+
+}  // namespace projtrack

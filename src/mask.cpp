@@ -1,0 +1,284 @@
+#include "mask.hpp"
+
+#include <algorithm>
+
+namespace projtrack {
+
+void Mask::reset(const Rect& r) {
+  rect_ = r.empty() ? Rect{} : r;
+  const std::size_t n = static_cast<std::size_t>(rect_.width) * rect_.height;
+  if (data_.size() < n) data_.resize(n);
+  std::fill_n(data_.begin(), n, 0);
+}
+
+MaskMoments moments(const Mask& m) {
+  MaskMoments out;
+  const Rect& r = m.rect();
+  double sx = 0, sy = 0;
+  std::size_t n = 0;
+  BoundsAccumulator bounds;
+  for (int y = 0; y < r.height; ++y) {
+    const std::uint8_t* row = m.row(y);
+    std::size_t row_n = 0, row_sx = 0;
+    int first = -1, last = -1;
+    for (int x = 0; x < r.width; ++x) {
+      if (!row[x]) continue;
+      ++row_n;
+      row_sx += x;
+      if (first < 0) first = x;
+      last = x;
+    }
+    if (!row_n) continue;
+    n += row_n;
+    sx += static_cast<double>(row_sx) + static_cast<double>(row_n) * r.x;
+    sy += static_cast<double>(row_n) * (y + r.y);
+    bounds.add_run(first + r.x, last + r.x, y + r.y);
+  }
+  if (!n) return out;
+  out.area = static_cast<double>(n);
+  out.centroid = {sx / n, sy / n};
+  out.bbox = bounds.rect();
+  return out;
+}
+
+void MaskOps::flood(Mask& m, Point2i p, std::uint8_t value, std::uint8_t mark) {
+  const int w = m.rect().width, h = m.rect().height;
+  stack_.clear();
+  stack_.push_back(p);
+  while (!stack_.empty()) {
+    const Point2i s = stack_.back();
+    stack_.pop_back();
+    std::uint8_t* row = m.row(s.y);
+    if (row[s.x] != value) continue;
+    int x0 = s.x, x1 = s.x;
+    while (x0 > 0 && row[x0 - 1] == value) --x0;
+    while (x1 < w - 1 && row[x1 + 1] == value) ++x1;
+    std::fill(row + x0, row + x1 + 1, mark);
+    for (int ny = s.y - 1; ny <= s.y + 1; ny += 2) {
+      if (ny < 0 || ny >= h) continue;
+      const std::uint8_t* nrow = m.row(ny);
+      bool in_run = false;
+      for (int x = x0; x <= x1; ++x) {
+        const bool open = nrow[x] == value;
+        if (open && !in_run) stack_.push_back({x, ny});
+        in_run = open;
+      }
+    }
+  }
+}
+
+void MaskOps::fill_holes(Mask& m) {
+  const int w = m.rect().width, h = m.rect().height;
+  if (w == 0 || h == 0) return;
+  for (int x = 0; x < w; ++x) {
+    if (m.row(0)[x] == 0) flood(m, {x, 0}, 0, 2);
+    if (m.row(h - 1)[x] == 0) flood(m, {x, h - 1}, 0, 2);
+  }
+  for (int y = 0; y < h; ++y) {
+    if (m.row(y)[0] == 0) flood(m, {0, y}, 0, 2);
+    if (m.row(y)[w - 1] == 0) flood(m, {w - 1, y}, 0, 2);
+  }
+  for (int y = 0; y < h; ++y) {
+    std::uint8_t* row = m.row(y);
+    for (int x = 0; x < w; ++x) row[x] = row[x] != 2;  // outside → 0, holes and object → 1
+  }
+}
+
+bool MaskOps::keep_component(Mask& m, Point2i p) {
+  if (!m.at(p)) return false;
+  flood(m, {p.x - m.rect().x, p.y - m.rect().y}, 1, 2);
+  for (int y = 0; y < m.rect().height; ++y) {
+    std::uint8_t* row = m.row(y);
+    for (int x = 0; x < m.rect().width; ++x) row[x] = row[x] == 2;
+  }
+  return true;
+}
+
+// Each pixel of `dst` counts the set pixels of `src` within r along its row (outside = unset);
+// `all` asks for every one of the 2r + 1 to be set (erosion) rather than any (dilation).
+void MaskOps::spread_rows(const Mask& src, int r, Mask& dst) {
+  const Rect& rect = src.rect();
+  dst.reset(rect);
+  const int w = rect.width;
+  counts_.resize(static_cast<std::size_t>(w) + 1);
+  for (int y = 0; y < rect.height; ++y) {
+    const std::uint8_t* s = src.row(y);
+    counts_[0] = 0;
+    for (int x = 0; x < w; ++x) counts_[x + 1] = counts_[x] + (s[x] != 0);
+    std::uint8_t* d = dst.row(y);
+    for (int x = 0; x < w; ++x)
+      d[x] = static_cast<std::uint8_t>(
+          std::min(counts_[std::min(w, x + r + 1)] - counts_[std::max(0, x - r)], 255));
+  }
+}
+
+void MaskOps::spread_columns(Mask& m, int r) {
+  const Rect& rect = m.rect();
+  const int w = rect.width, h = rect.height;
+  tmp_.reset(rect);
+  counts_.assign(static_cast<std::size_t>(w), 0);  // per column: set rows in the window
+  for (int y = 0; y < std::min(r, h); ++y) {
+    const std::uint8_t* s = m.row(y);
+    for (int x = 0; x < w; ++x) counts_[x] += s[x] != 0;
+  }
+  for (int y = 0; y < h; ++y) {
+    if (y + r < h) {
+      const std::uint8_t* add = m.row(y + r);
+      for (int x = 0; x < w; ++x) counts_[x] += add[x] != 0;
+    }
+    if (y - r - 1 >= 0) {
+      const std::uint8_t* drop = m.row(y - r - 1);
+      for (int x = 0; x < w; ++x) counts_[x] -= drop[x] != 0;
+    }
+    std::uint8_t* d = tmp_.row(y);
+    for (int x = 0; x < w; ++x) d[x] = static_cast<std::uint8_t>(std::min(counts_[x], 255));
+  }
+  m.swap(tmp_);
+}
+
+void MaskOps::dilate(const Mask& src, int r, Mask& dst) {
+  r = std::max(0, r);
+  spread_rows(src, r, dst);
+  spread_columns(dst, r);
+  for (int y = 0; y < dst.rect().height; ++y) {
+    std::uint8_t* d = dst.row(y);
+    for (int x = 0; x < dst.rect().width; ++x) d[x] = d[x] != 0;
+  }
+}
+
+void MaskOps::erode(const Mask& src, int r, Mask& dst) {
+  r = std::max(0, r);
+  const int full = 2 * r + 1;
+  spread_rows(src, r, dst);
+  for (int y = 0; y < dst.rect().height; ++y) {  // rows whose whole run is set
+    std::uint8_t* d = dst.row(y);
+    for (int x = 0; x < dst.rect().width; ++x) d[x] = d[x] >= full;
+  }
+  spread_columns(dst, r);
+  for (int y = 0; y < dst.rect().height; ++y) {
+    std::uint8_t* d = dst.row(y);
+    for (int x = 0; x < dst.rect().width; ++x) d[x] = d[x] >= full;
+  }
+}
+
+std::pair<Point2i, double> MaskOps::deepest(const Mask& m) {
+  const int w = m.rect().width, h = m.rect().height;
+  distance_.assign(static_cast<std::size_t>(w) * h, 0);
+  const auto d = [&](int x, int y) -> int& {
+    return distance_[static_cast<std::size_t>(y) * w + x];
+  };
+  // Two chamfer passes (3 along a row or column, 4 diagonally); outside the mask counts as unset.
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!m.row(y)[x]) continue;
+      int v = 3;  // next to the border
+      if (x > 0 && y > 0) {
+        v = std::min({d(x - 1, y) + 3, d(x, y - 1) + 3, d(x - 1, y - 1) + 4,
+                      x + 1 < w ? d(x + 1, y - 1) + 4 : 3});
+      }
+      d(x, y) = v;
+    }
+  }
+  std::pair<Point2i, double> best{{}, 0};
+  int best_v = 0;
+  for (int y = h - 1; y >= 0; --y) {
+    for (int x = w - 1; x >= 0; --x) {
+      if (!m.row(y)[x]) continue;
+      int v = d(x, y);
+      if (x + 1 < w && y + 1 < h) {
+        v = std::min({v, d(x + 1, y) + 3, d(x, y + 1) + 3, d(x + 1, y + 1) + 4,
+                      x > 0 ? d(x - 1, y + 1) + 4 : 3});
+      } else {
+        v = 3;
+      }
+      d(x, y) = v;
+    }
+  }
+  for (int y = 0; y < h; ++y) {  // raster order for the ties
+    for (int x = 0; x < w; ++x) {
+      if (d(x, y) > best_v) {
+        best_v = d(x, y);
+        best.first = {x + m.rect().x, y + m.rect().y};
+      }
+    }
+  }
+  best.second = best_v / 3.0;
+  return best;
+}
+
+void MaskOps::convex_hull(const Mask& src, Mask& dst) {
+  const Rect& r = src.rect();
+  dst.reset(r);
+  // The first and last set pixel of each row hold every hull vertex.
+  points_.clear();
+  for (int y = 0; y < r.height; ++y) {
+    const std::uint8_t* row = src.row(y);
+    int first = -1, last = -1;
+    for (int x = 0; x < r.width; ++x) {
+      if (!row[x]) continue;
+      if (first < 0) first = x;
+      last = x;
+    }
+    if (first < 0) continue;
+    points_.push_back({first, y});
+    if (last != first) points_.push_back({last, y});
+  }
+  if (points_.empty()) return;
+  // Andrew's monotone chain over points sorted by (x, y).
+  std::sort(points_.begin(), points_.end(),
+            [](Point2i a, Point2i b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  const auto cross = [](Point2i o, Point2i a, Point2i b) {
+    return static_cast<long long>(a.x - o.x) * (b.y - o.y) -
+           static_cast<long long>(a.y - o.y) * (b.x - o.x);
+  };
+  hull_.assign(2 * points_.size(), {});
+  std::size_t k = 0;
+  for (const Point2i& p : points_) {
+    while (k >= 2 && cross(hull_[k - 2], hull_[k - 1], p) <= 0) --k;
+    hull_[k++] = p;
+  }
+  for (std::size_t i = points_.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross(hull_[k - 2], hull_[k - 1], points_[i]) <= 0) --k;
+    hull_[k++] = points_[i];
+  }
+  hull_.resize(k > 1 ? k - 1 : k);
+  // Each row: the span between the hull's edges that cross it (pixel centres inside or on).
+  for (int y = 0; y < r.height; ++y) {
+    double lo = 1e18, hi = -1e18;
+    for (std::size_t i = 0; i < hull_.size(); ++i) {
+      const Point2i a = hull_[i], b = hull_[(i + 1) % hull_.size()];
+      if ((a.y - y) * static_cast<long long>(b.y - y) > 0) continue;  // the edge misses the row
+      if (a.y == b.y) {
+        lo = std::min({lo, static_cast<double>(a.x), static_cast<double>(b.x)});
+        hi = std::max({hi, static_cast<double>(a.x), static_cast<double>(b.x)});
+        continue;
+      }
+      const double x = a.x + static_cast<double>(y - a.y) * (b.x - a.x) / (b.y - a.y);
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+    if (lo > hi) continue;
+    std::uint8_t* d = dst.row(y);
+    const int x0 = std::max(0, static_cast<int>(std::ceil(lo - 1e-9)));
+    const int x1 = std::min(r.width - 1, static_cast<int>(std::floor(hi + 1e-9)));
+    for (int x = x0; x <= x1; ++x) d[x] = 1;
+  }
+}
+
+void MaskOps::outline(const Mask& m, std::vector<Point2i>& out) const {
+  out.clear();
+  const Rect& r = m.rect();
+  for (int y = 0; y < r.height; ++y) {
+    const std::uint8_t* row = m.row(y);
+    const std::uint8_t* up = y > 0 ? m.row(y - 1) : nullptr;
+    const std::uint8_t* down = y + 1 < r.height ? m.row(y + 1) : nullptr;
+    for (int x = 0; x < r.width; ++x) {
+      if (!row[x]) continue;
+      const bool edge = x == 0 || x + 1 == r.width || !up || !down || !row[x - 1] || !row[x + 1] ||
+                        !up[x] || !down[x];
+      if (edge) out.push_back({x + r.x, y + r.y});
+    }
+  }
+}
+
+}  // namespace projtrack

@@ -1,0 +1,80 @@
+#include "motion_acquisition.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "plausibility.hpp"
+
+namespace projtrack {
+
+namespace {
+
+double share_inside(const std::vector<Point2i>& points, const Rect& r) {
+  if (points.empty()) return 0;
+  std::size_t n = 0;
+  for (const Point2i& p : points) n += r.contains(p);
+  return static_cast<double>(n) / points.size();
+}
+
+}  // namespace
+
+std::optional<Features> MotionAcquisition::acquire(const ImageView& gray, const ImageView& edges,
+                                                   Estimator& est, const Params& params,
+                                                   double limit, const TrackerParams& tp,
+                                                   std::string& why) {
+  // Motion history from before a switch of mode (or from the last search) is stale.
+  if (tp.acquisition != last_mode_) motion_.reset();
+  last_mode_ = tp.acquisition;
+  if (tp.acquisition == Acquisition::Manual) {
+    why = "no inner point: set one, or click in the video";
+    return std::nullopt;
+  }
+  if (tp.acquisition == Acquisition::Center) {
+    Features f = est.estimate(edges, {edges.width / 2, edges.height / 2}, params);
+    why = implausible(f, edges.width, edges.height, tp);
+    if (why.empty()) return f;
+    why = "at the frame centre: " + why;
+    return std::nullopt;
+  }
+  if (!motion_.update(gray, tp.motion, moved_)) {
+    why = "waiting for a second frame to compare";
+    return std::nullopt;
+  }
+  if (moved_.fraction < tp.min_motion) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "waiting for motion (%.2g %% of the frame changed)",
+                  100 * moved_.fraction);
+    why = buf;
+    return std::nullopt;
+  }
+  std::vector<Point2i> candidates{round_to_pixel(moved_.centroid)};
+  if (tp.strategy == AutoAcquisition::CompactMovingRegion) {
+    const std::size_t n = moved_.points.size(), k = std::max(1, tp.candidates);
+    for (std::size_t i = 0; i < k && i < n; ++i) candidates.push_back(moved_.points[i * n / k]);
+  }
+  std::optional<Features> best;
+  double best_score = -1;
+  Params limited = params;
+  limited.area_limit = limit;
+  for (const Point2i& c : candidates) {
+    if (best && best->bbox.contains(c)) continue;  // already inside the best region found
+    Features f = est.estimate(edges, c, limited);
+    if (!implausible(f, edges.width, edges.height, tp).empty()) continue;
+    // A sliver between two edges (seen on real footage: a 2×23 px strip) is not an object.
+    if (std::min(f.bbox.width, f.bbox.height) < tp.min_acquired_side) continue;
+    if (tp.strategy == AutoAcquisition::MotionCentroid) return f;
+    // Moving (holds changed pixels) and compact (fills its box), unlike a background region.
+    const double box = static_cast<double>(f.bbox.width) * f.bbox.height;
+    const double score = share_inside(moved_.points, f.bbox) * f.area / box;
+    if (score > best_score) {
+      best_score = score;
+      best = std::move(f);
+    }
+  }
+  if (!best)
+    why = "no closed region where the frame moved (" + std::to_string(candidates.size()) +
+          " seeds tried)";
+  return best;
+}
+
+}  // namespace projtrack

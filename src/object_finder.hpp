@@ -1,0 +1,65 @@
+// Finds an object's first silhouette, before any model of it exists: around a point the user
+// gave, where the frame moves, or, for an object seen before, where its colours are.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "appearance_model.hpp"
+#include "color_view.hpp"
+#include "mask.hpp"
+#include "motion_detector.hpp"
+#include "region_labels.hpp"
+
+namespace projtrack {
+
+struct FinderParams {
+  // The frame's border strip, as a share of its smaller side (at least 4 px): what is seen there
+  // is background. A colour counts as seen there from this share of the strip's pixels on.
+  double border = 0.04;
+  double border_share = 0.0007;
+  // A candidate must fill at least this share of the frame, and at most max_area.
+  double min_area = 0.002;
+  double max_area = 0.5;
+  // A candidate found by motion or by colour must have at least this share of its sampled
+  // pixels moving: a static region (the background, a table) is never taken for the object.
+  double min_moving = 0.02;
+};
+
+class ObjectFinder {
+ public:
+  // The object around `seed`: the 4-connected region of colours not seen on the frame's border
+  // (a held object is in the middle of the picture; the wall, the table and the arm that holds
+  // it reach the border), the nearest one when the seed's own colour is seen there, its holes
+  // filled. False (and `why`) when there is none within reach of the seed.
+  bool from_seed(const ColorView& frame, Point2i seed, const FinderParams& p, Mask& out,
+                 std::string& why);
+  // The moving object: of the regions of colours not seen on the border, the one with the most
+  // moving pixels for its size that does not touch the border (the arm that waves an object
+  // does) and is not static. `seed` gets its deepest point.
+  bool from_motion(const ColorView& frame, const MotionDetector::Motion& motion,
+                   const FinderParams& p, Mask& out, Point2i& seed, std::string& why);
+  // An object seen before: of the regions whose colours the model finds object-like, the one
+  // closest in size to `area` (within `factor`) and nearest `near`, that moves.
+  bool from_model(const ColorView& frame, const AppearanceModel& model,
+                  const MotionDetector::Motion& motion, double area, double factor, Point2d near,
+                  const FinderParams& p, Mask& out, Point2i& seed, std::string& why);
+
+ private:
+  // The pixels whose colours are not seen on the border, into candidates_ (frame-sized).
+  void foreground(const ColorView& frame, const FinderParams& p);
+  // Picks the best labelled region of candidates_ by `score` (higher is better, < 0 refused).
+  template <class Score>
+  int best_region(Score&& score);
+  void copy_region(int label, Mask& out);
+
+  std::vector<std::uint32_t> border_counts_;
+  std::vector<std::uint8_t> background_;  // per colour bin
+  std::vector<std::uint8_t> like_;
+  Mask candidates_, opened_;
+  RegionLabels regions_;
+  std::vector<std::int64_t> moving_;
+  MaskOps ops_;
+};
+
+}  // namespace projtrack

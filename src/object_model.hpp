@@ -1,0 +1,78 @@
+// The object as the tracker knows it between frames: its silhouette and its colours against its
+// surroundings'. Finds the object's silhouette on each new frame near the last one, and learns.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "appearance_model.hpp"
+#include "color_view.hpp"
+#include "edge_source.hpp"
+#include "mask.hpp"
+#include "silhouette.hpp"
+
+namespace projtrack {
+
+struct ObjectModelParams {
+  // The surroundings the colours are learned against: a ring this share of √area wide around
+  // the silhouette (at least 8 px). Wide enough to take in the hand that holds the object.
+  double ring = 0.5;
+  // At the start, only the colours of the disc around the seed are the object's (its radius the
+  // seed's depth in the first silhouette, at least this share of √area): a first silhouette may
+  // take in part of the hand, the disc does not.
+  double core = 0.3;
+  int start_rounds = 3;  // rounds of segmenting and learning on the first frame
+  // How fast the colours follow the object's: the share of this frame in the model.
+  double learning_rate = 0.05;
+  // The silhouette may move this share of √area (at least 8 px) beyond the last one moved by the
+  // object's motion; the region searched is its box grown by `margin` of its larger side.
+  double reach = 0.08;
+  double margin = 0.25;
+  // Edge-bounded regions under this share of the expected area are taken or left whole.
+  double small_region = 0.25;
+};
+
+class ObjectModel {
+ public:
+  // Forgets the object and its colours.
+  void reset();
+  // Forgets where the object is, keeps its colours (to find it again).
+  void lose() { silhouette_.reset({}); }
+  bool tracking() const { return !silhouette_.empty(); }
+  bool knows_colours() const { return !appearance_.empty(); }
+  const Mask& silhouette() const { return silhouette_; }
+  const AppearanceModel& appearance() const { return appearance_; }
+
+  // Starts from a first silhouette found around `seed`: learns the colours of its core against
+  // its surroundings, then segments and learns again on this frame. Holds the result as the
+  // silhouette and puts it in `out`; false when nothing is left of the object.
+  bool start(const ColorView& frame, EdgeSource& edges, const Mask& first, Point2i seed,
+             const ObjectModelParams& p, Mask& out);
+  // Resumes an object found again by its colours around `first`: segments with the colours it
+  // knows (learning nothing until accept()) and holds the result as the silhouette.
+  bool resume(const ColorView& frame, EdgeSource& edges, const Mask& first, Point2i seed,
+              const ObjectModelParams& p, Mask& out);
+  // This frame's silhouette near the last one moved by `motion` (px), holding `hint` when it can
+  // (the inner point). Learns nothing and keeps the last silhouette: see accept().
+  bool find(const ColorView& frame, EdgeSource& edges, Point2d motion, Point2i hint,
+            const ObjectModelParams& p, Mask& out);
+  // Takes `s` as the object's silhouette and learns its colours at `p.learning_rate`.
+  void accept(const ColorView& frame, const Mask& s, const ObjectModelParams& p);
+
+ private:
+  // Learns the colours of `object` against a ring around `silhouette`.
+  void learn(const ColorView& frame, const Mask& object, const Mask& silhouette, double ring,
+             double rate);
+  // Adds to `s` the pixels inside its convex hull whose colours the model has not seen.
+  void take_unseen_inside(const ColorView& frame, Point2i seed, Mask& s);
+  bool segment(const ColorView& frame, EdgeSource& edges, const Rect& roi, const Mask& prior,
+               double area, Point2i hint, int reach, const ObjectModelParams& p, Mask& out);
+
+  AppearanceModel appearance_;
+  SilhouetteSegmenter segmenter_;
+  MaskOps ops_;
+  Mask silhouette_, prior_, core_, grown_, ring_;
+  std::vector<std::uint8_t> likelihood_;
+};
+
+}  // namespace projtrack

@@ -1,0 +1,44 @@
+// The 3D pointer: x and y from the centroid, depth from the area, smoothed, with push clicks.
+#pragma once
+
+#include "features.hpp"
+#include "one_euro_filter.hpp"
+#include "push_detector.hpp"
+#include "tracker_params.hpp"
+
+namespace projtrack {
+
+// x, y in [-1, 1] from the centroid (0 at the frame centre, +1 at the right and bottom edges);
+// depth 1 when the object was first acquired, then sqrt(area / area then): it rises as the
+// object nears the camera.
+struct Pose {
+  double x = 0, y = 0, depth = 1;
+};
+
+class Pointer {
+ public:
+  // A new object: its area now is depth 1.
+  void start(double area);
+  // The same object found again after a loss: depth goes on from the first area; the filters
+  // and the push detector start afresh (the object may have moved while it was lost).
+  void resume();
+  bool started() const { return area0_ > 0; }
+  // One accepted estimate at `t` seconds in a width × height frame.
+  void update(const Features& f, int width, int height, double t, const TrackerParams& tp);
+  // A refused frame: a push in progress does not survive it.
+  void interrupt() { push_.reset(); }
+  void reset() { area0_ = 0; }
+
+  const Pose& pose() const { return pose_; }  // smoothed when TrackerParams::smoothing
+  const Pose& raw() const { return raw_; }
+  bool pushed() const { return pushed_; }  // a push completed on the last update
+
+ private:
+  double area0_ = 0;
+  Pose pose_, raw_;
+  bool pushed_ = false;
+  OneEuroFilter fx_, fy_, fdepth_;
+  PushDetector push_;
+};
+
+}  // namespace projtrack

@@ -1,0 +1,80 @@
+#include "silhouette_pieces.hpp"
+
+#include <algorithm>
+
+namespace projtrack {
+
+int SilhouettePieces::split(const Mask& s, int neck, double min_share) {
+  rect_ = s.rect();
+  const int w = rect_.width, h = rect_.height;
+  order_.clear();
+  owner_.assign(static_cast<std::size_t>(w) * h, 0);
+  const double area = moments(s).area;
+  if (area <= 0) return 0;
+  ops_.erode(s, std::max(0, neck), tmp_);
+  ops_.dilate(tmp_, std::max(0, neck), opened_);
+  cores_.label(opened_.view(), false);
+  label_of_.assign(static_cast<std::size_t>(cores_.count()) + 1, -1);
+  for (int l = 1; l <= cores_.count(); ++l)
+    if (cores_.size(l) >= min_share * area) order_.push_back(l);
+  std::sort(order_.begin(), order_.end(),
+            [&](int a, int b) { return cores_.size(a) > cores_.size(b); });
+  queue_.clear();
+  for (std::size_t i = 0; i < order_.size(); ++i) label_of_[order_[i]] = static_cast<int>(i);
+  for (int y = 0; y < h; ++y) {
+    const std::int32_t* l = cores_.row(y);
+    for (int x = 0; x < w; ++x) {
+      if (!l[x] || label_of_[l[x]] < 0) continue;
+      owner_[static_cast<std::size_t>(y) * w + x] = label_of_[l[x]] + 1;
+      queue_.push_back({x, y});
+    }
+  }
+  if (order_.empty()) {  // too thin to open anywhere: one piece, the whole silhouette
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) owner_[static_cast<std::size_t>(y) * w + x] = s.row(y)[x];
+    order_.push_back(0);
+    return 1;
+  }
+  // Grown back breadth first over the silhouette: each pixel goes to the nearest core.
+  for (std::size_t head = 0; head < queue_.size(); ++head) {
+    const Point2i p = queue_[head];
+    const std::int32_t o = owner_[static_cast<std::size_t>(p.y) * w + p.x];
+    const Point2i next[4] = {{p.x - 1, p.y}, {p.x + 1, p.y}, {p.x, p.y - 1}, {p.x, p.y + 1}};
+    for (const Point2i& q : next) {
+      if (q.x < 0 || q.y < 0 || q.x >= w || q.y >= h || !s.row(q.y)[q.x]) continue;
+      std::int32_t& owner = owner_[static_cast<std::size_t>(q.y) * w + q.x];
+      if (owner) continue;
+      owner = o;
+      queue_.push_back(q);
+    }
+  }
+  return static_cast<int>(order_.size());
+}
+
+const Mask& SilhouettePieces::piece(int i) {
+  piece_.reset(rect_);
+  for (int y = 0; y < rect_.height; ++y) {
+    const std::int32_t* o = owner_.data() + static_cast<std::size_t>(y) * rect_.width;
+    std::uint8_t* d = piece_.row(y);
+    for (int x = 0; x < rect_.width; ++x) d[x] = o[x] == i + 1;
+  }
+  return piece_;
+}
+
+Point2i SilhouettePieces::deepest(int i) {
+  if (order_.size() == 1 && order_[0] == 0) return ops_.deepest(piece(0)).first;
+  core_.reset(rect_);
+  for (int y = 0; y < rect_.height; ++y) {
+    const std::int32_t* l = cores_.row(y);
+    std::uint8_t* d = core_.row(y);
+    for (int x = 0; x < rect_.width; ++x) d[x] = l[x] == order_[i];
+  }
+  return ops_.deepest(core_).first;
+}
+
+int SilhouettePieces::piece_at(Point2i p) const {
+  if (!rect_.contains(p)) return -1;
+  return owner_[static_cast<std::size_t>(p.y - rect_.y) * rect_.width + (p.x - rect_.x)] - 1;
+}
+
+}  // namespace projtrack

@@ -1,0 +1,70 @@
+// Everything that tunes the tracker, stage by stage.
+#pragma once
+
+#include "motion_detector.hpp"
+#include "object_finder.hpp"
+#include "object_model.hpp"
+#include "one_euro_filter.hpp"
+#include "push_detector.hpp"
+
+namespace projtrack {
+
+// How tracking starts when there is no object.
+enum class Acquisition {
+  Manual,  // wait for an inner point (a property or a click)
+  Center,  // try the frame centre
+  Auto,    // the most relevant object: see AutoAcquisition (edges) and ObjectFinder (appearance)
+};
+
+// How Acquisition::Auto picks the object with the edges model (compared in docs/benchmarks.md).
+enum class AutoAcquisition {
+  MotionCentroid,       // the original system's: the centroid of the changed pixels
+  CompactMovingRegion,  // the changed pixels as candidate seeds; the most compact moving fill
+};
+
+// What the tracker knows of the object between frames.
+enum class ObjectModelKind {
+  // The paper's tracker: the estimator on the edge image from the inner point, nothing else.
+  Edges,
+  // The object as real footage shows it: its silhouette from its colours against its
+  // surroundings', the edges and its last silhouette moved by its motion; the estimator runs on
+  // that silhouette's outline (docs/tracker.md).
+  Appearance,
+};
+
+struct TrackerParams {
+  ObjectModelKind model = ObjectModelKind::Appearance;
+  Acquisition acquisition = Acquisition::Auto;
+  AutoAcquisition strategy = AutoAcquisition::CompactMovingRegion;
+  MotionDetector::Params motion{25, 4};
+  double min_motion = 0.002;  // share of the frame that must change before Auto looks
+  int candidates = 12;        // seeds CompactMovingRegion tries per frame
+  int min_acquired_side = 8;  // px: a region thinner than this is not acquired
+
+  // An estimate is refused (status Lost) when its area leaves [1/leak_factor, leak_factor] × the
+  // last accepted one (a leak, or the inner point fell into a small region), exceeds
+  // max_area × the frame, falls under min_area × the frame, or has no features at all.
+  double leak_factor = 2.0;
+  double max_area = 0.5;
+  double min_area = 0.0005;
+  int patience = 5;  // refused frames in a row tolerated; the next one drops the track
+
+  // Edges model: while tracking, edges are needed only around the object: the last box, and that
+  // box moved by the object's last motion, grown by this share of its larger side (at least
+  // 16 px). An estimate that reaches the region's edge is redone on a region grown by four times
+  // the margin, then on the whole frame. Negative: always the whole frame.
+  double edge_margin = 0.1;
+
+  // Appearance model: how it finds, segments and learns the object.
+  ObjectModelParams object;
+  FinderParams finder;
+  // After a loss the object is searched by its colours; after this many frames without finding
+  // it, its colours are forgotten and Auto acquisition looks for any moving object.
+  int forget_after = 150;
+
+  bool smoothing = true;  // One Euro filter on x, y and depth
+  OneEuroFilter::Params filter;
+  PushDetector::Params push;
+};
+
+}  // namespace projtrack
