@@ -10,34 +10,33 @@ void AppearanceModel::reset() {
   surroundings_.assign(kBins, 0.f);
   object_total_ = 0;
   lut_.fill(0);
-  seen_.fill(0);
+  around_.fill(0);
 }
 
-void AppearanceModel::count(const ColorView& frame, const Mask& m, std::vector<float>& hist) const {
+void AppearanceModel::count(const ColorView& image, Point2i origin, const Mask& m,
+                            std::vector<float>& hist) const {
   hist.assign(kBins, 0.f);
-  const Rect r = m.rect() & Rect{0, 0, frame.luma.width, frame.luma.height};
+  const Rect r =
+      Rect{m.rect().x - origin.x, m.rect().y - origin.y, m.rect().width, m.rect().height} &
+      Rect{0, 0, image.luma.width, image.luma.height};
   for (int y = r.y; y < r.bottom(); ++y) {
-    const std::uint8_t* in = m.row(y - m.rect().y) - m.rect().x;
-    const std::uint8_t* luma = frame.luma.row(y);
-    for (int x = r.x; x < r.right(); ++x) {
-      if (!in[x]) continue;
-      const std::uint8_t u = chroma_ ? frame.chroma.u_at(x, y) : 0;
-      const std::uint8_t v = chroma_ ? frame.chroma.v_at(x, y) : 0;
-      hist[index(luma[x], u, v)] += 1.f;
-    }
+    const std::uint8_t* in = m.row(y + origin.y - m.rect().y) + (origin.x - m.rect().x);
+    for_each_bin(image, y, r.x, r.right(), [&](int b, int x) {
+      if (in[x]) hist[b] += 1.f;
+    });
   }
 }
 
-void AppearanceModel::learn(const ColorView& frame, const Mask& object, const Mask& surroundings,
-                            double rate) {
+void AppearanceModel::learn(const ColorView& image, Point2i origin, const Mask& object,
+                            const Mask& surroundings, double rate) {
   if (object_.size() != kBins) reset();
   rate = std::clamp(rate, 0.0, 1.0);
   if (empty()) {
     rate = 1.0;
-    chroma_ = frame.has_chroma();
+    chroma_ = image.has_chroma();
   }
   const auto blend = [&](const Mask& m, std::vector<float>& hist) {
-    count(frame, m, scratch_);
+    count(image, origin, m, scratch_);
     for (int b = 0; b < kBins; ++b)
       hist[b] = static_cast<float>((1 - rate) * hist[b] + rate * scratch_[b]);
   };
@@ -64,47 +63,49 @@ void AppearanceModel::rebuild() {
   for (int b = 0; b < bins; ++b) {
     const double o = smoothed(object_, b), s = smoothed(surroundings_, b);
     lut_[b] = static_cast<std::uint8_t>(std::lround(255.0 * o / (o + s + prior)));
-    seen_[b] = o + s >= 1.0;
+    around_[b] = s > o + 1.0;
   }
 }
 
 template <class F>
-void AppearanceModel::for_each_bin(const ColorView& frame, const Rect& r, int y, F&& f) const {
-  const std::uint8_t* luma = frame.luma.row(y);
-  if (!chroma_ || !frame.has_chroma()) {
-    for (int x = r.x; x < r.right(); ++x) f(index(luma[x], 128, 128), x);
+void AppearanceModel::for_each_bin(const ColorView& image, int y, int x0, int x1, F&& f) const {
+  const std::uint8_t* luma = image.luma.row(y);
+  if (!chroma_ || !image.has_chroma()) {
+    for (int x = x0; x < x1; ++x) f(index(luma[x], 128, 128), x);
     return;
   }
-  const ChromaView& c = frame.chroma;
+  const ChromaView& c = image.chroma;
   const std::uint8_t* u = c.u + static_cast<std::ptrdiff_t>(y >> c.shift_y) * c.stride;
   const std::uint8_t* v = c.v + static_cast<std::ptrdiff_t>(y >> c.shift_y) * c.stride;
-  for (int x = r.x; x < r.right(); ++x) {
+  for (int x = x0; x < x1; ++x) {
     const std::ptrdiff_t k = static_cast<std::ptrdiff_t>(x >> c.shift_x) * c.pixel_stride;
     f(bin(luma[x], u[k], v[k]), x);
   }
 }
 
-void AppearanceModel::likelihood(const ColorView& frame, const Rect& roi,
-                                 std::vector<std::uint8_t>& out) const {
-  const Rect r = roi & Rect{0, 0, frame.luma.width, frame.luma.height};
-  out.resize(static_cast<std::size_t>(std::max(0, roi.width)) * std::max(0, roi.height));
-  std::fill(out.begin(), out.end(), 0);
-  if (empty()) return;
+template <class F>
+void AppearanceModel::over_roi(const ColorView& image, Point2i origin, const Rect& roi,
+                               F&& f) const {
+  const Rect r = Rect{roi.x - origin.x, roi.y - origin.y, roi.width, roi.height} &
+                 Rect{0, 0, image.luma.width, image.luma.height};
   for (int y = r.y; y < r.bottom(); ++y) {
-    std::uint8_t* o = out.data() + static_cast<std::size_t>(y - roi.y) * roi.width - roi.x;
-    for_each_bin(frame, r, y, [&](int b, int x) { o[x] = lut_[b]; });
+    const std::size_t row = static_cast<std::size_t>(y + origin.y - roi.y) * roi.width;
+    const int dx = origin.x - roi.x;
+    for_each_bin(image, y, r.x, r.right(), [&](int b, int x) { f(b, row + x + dx); });
   }
 }
 
-void AppearanceModel::seen(const ColorView& frame, const Rect& roi,
-                           std::vector<std::uint8_t>& out) const {
-  const Rect r = roi & Rect{0, 0, frame.luma.width, frame.luma.height};
-  out.resize(static_cast<std::size_t>(std::max(0, roi.width)) * std::max(0, roi.height));
-  std::fill(out.begin(), out.end(), 0);
-  for (int y = r.y; y < r.bottom(); ++y) {
-    std::uint8_t* o = out.data() + static_cast<std::size_t>(y - roi.y) * roi.width - roi.x;
-    for_each_bin(frame, r, y, [&](int b, int x) { o[x] = seen_[b]; });
-  }
+void AppearanceModel::likelihood(const ColorView& image, Point2i origin, const Rect& roi,
+                                 std::vector<std::uint8_t>& out) const {
+  out.assign(static_cast<std::size_t>(std::max(0, roi.width)) * std::max(0, roi.height), 0);
+  if (empty()) return;
+  over_roi(image, origin, roi, [&](int b, std::size_t i) { out[i] = lut_[b]; });
+}
+
+void AppearanceModel::surroundings_like(const ColorView& image, Point2i origin, const Rect& roi,
+                                        std::vector<std::uint8_t>& out) const {
+  out.assign(static_cast<std::size_t>(std::max(0, roi.width)) * std::max(0, roi.height), 0);
+  over_roi(image, origin, roi, [&](int b, std::size_t i) { out[i] = around_[b]; });
 }
 
 }  // namespace projtrack

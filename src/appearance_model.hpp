@@ -27,17 +27,24 @@ class AppearanceModel {
   void reset();
   bool empty() const { return object_total_ <= 0; }
 
-  // Counts the colours of `object` (its set pixels) and of `surroundings` in `frame`, and blends
-  // them into the model: rate 1 replaces what it knew, a small rate adapts it slowly.
-  void learn(const ColorView& frame, const Mask& object, const Mask& surroundings, double rate);
+  // In every call, pixel (x, y) of the masks and rectangles is pixel (x - origin.x, y - origin.y)
+  // of `image` (a work frame: see WorkFrame); what falls outside `image` is ignored.
 
-  // P(object | colour) of every pixel of `roi` (clipped to the frame), scaled to 0–255, into
-  // `out` (roi.width × roi.height, row stride roi.width): a colour seen mostly on the object
-  // scores high, one seen mostly around it or never seen scores low.
-  void likelihood(const ColorView& frame, const Rect& roi, std::vector<std::uint8_t>& out) const;
-  // 1 for every pixel of `roi` whose colour the model has seen (on the object or around it), 0
-  // for a colour it knows nothing of; same layout as likelihood().
-  void seen(const ColorView& frame, const Rect& roi, std::vector<std::uint8_t>& out) const;
+  // Counts the colours of `object` (its set pixels) and of `surroundings`, and blends them into
+  // the model: rate 1 replaces what it knew, a small rate adapts it slowly.
+  void learn(const ColorView& image, Point2i origin, const Mask& object, const Mask& surroundings,
+             double rate);
+
+  // P(object | colour) of every pixel of `roi`, scaled to 0–255, into `out` (roi.width ×
+  // roi.height, row stride roi.width): a colour seen mostly on the object scores high, one seen
+  // mostly around it or never seen scores low.
+  void likelihood(const ColorView& image, Point2i origin, const Rect& roi,
+                  std::vector<std::uint8_t>& out) const;
+  // 1 for every pixel of `roi` whose colour the model has seen more around the object than on
+  // it, 0 for the others (the object's colours and those it knows nothing of); same layout as
+  // likelihood().
+  void surroundings_like(const ColorView& image, Point2i origin, const Rect& roi,
+                         std::vector<std::uint8_t>& out) const;
   // The same for one colour.
   std::uint8_t likelihood(std::uint8_t y, std::uint8_t u, std::uint8_t v) const {
     return lut_[index(y, u, v)];
@@ -47,16 +54,19 @@ class AppearanceModel {
   int index(std::uint8_t y, std::uint8_t u, std::uint8_t v) const {
     return chroma_ ? bin(y, u, v) : y >> 2;
   }
-  void count(const ColorView& frame, const Mask& m, std::vector<float>& hist) const;
+  void count(const ColorView& image, Point2i origin, const Mask& m, std::vector<float>& hist) const;
   void rebuild();
-  // Calls f(bin, x) for every pixel of row y of `r` (clipped to the frame).
+  // Calls f(bin, x) for x in [x0, x1) of row y of `image`.
   template <class F>
-  void for_each_bin(const ColorView& frame, const Rect& r, int y, F&& f) const;
+  void for_each_bin(const ColorView& image, int y, int x0, int x1, F&& f) const;
+  // Calls f(bin, out index) for every pixel of `roi` inside `image`.
+  template <class F>
+  void over_roi(const ColorView& image, Point2i origin, const Rect& roi, F&& f) const;
 
   bool chroma_ = true;
   std::vector<float> object_, surroundings_, scratch_;  // counts per bin
   double object_total_ = 0;
-  std::array<std::uint8_t, kBins> lut_{}, seen_{};
+  std::array<std::uint8_t, kBins> lut_{}, around_{};
 };
 
 }  // namespace projtrack

@@ -3,10 +3,13 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
+#include <vector>
 
 #include "edge_detection.hpp"
 #include "geometry.hpp"
 #include "image_view.hpp"
+#include "work_frame.hpp"
 
 namespace projtrack {
 
@@ -19,6 +22,10 @@ class EdgeSource {
   const ImageView& frame() const { return map_ ? gray_ : given_; }
   // The edges of `region` (clipped to the frame), valid until the next call.
   ImageView region(const Rect& r);
+  // The edges of a work frame (see WorkFrame), valid until the next call with the same `map`:
+  // detected on its luma with this source's parameters (into `map`), or, for given edges, an
+  // edge wherever its block holds one (into `buffer`).
+  ImageView work(const WorkFrame& wf, EdgeMap& map, std::vector<std::uint8_t>& buffer) const;
   // How far from a region's inner border its edges may differ from the whole frame's: the blur
   // passes after the first, and Canny's own 3×3 neighbourhood (0 for given edges).
   int border_guard() const { return map_ ? std::clamp(params_.blur, 0, kMaxBlurPasses) + 3 : 0; }

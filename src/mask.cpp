@@ -41,6 +41,24 @@ MaskMoments moments(const Mask& m) {
   return out;
 }
 
+void rescale(const Mask& src, int from, int to, Mask& dst) {
+  from = std::max(1, from);
+  to = std::max(1, to);
+  const Rect& r = src.rect();
+  const auto down = [](long long v, int d) { return v >= 0 ? v / d : -((-v + d - 1) / d); };
+  const int x0 = static_cast<int>(down(1LL * r.x * from, to));
+  const int y0 = static_cast<int>(down(1LL * r.y * from, to));
+  const int x1 = static_cast<int>(down(1LL * r.right() * from + to - 1, to));
+  const int y1 = static_cast<int>(down(1LL * r.bottom() * from + to - 1, to));
+  dst.reset({x0, y0, x1 - x0, y1 - y0});
+  for (int y = y0; y < y1; ++y) {
+    const int sy = static_cast<int>(down(1LL * y * to + to / 2, from));
+    std::uint8_t* d = dst.row(y - y0);
+    for (int x = x0; x < x1; ++x)
+      d[x - x0] = src.at({static_cast<int>(down(1LL * x * to + to / 2, from)), sy});
+  }
+}
+
 void MaskOps::flood(Mask& m, Point2i p, std::uint8_t value, std::uint8_t mark) {
   const int w = m.rect().width, h = m.rect().height;
   stack_.clear();

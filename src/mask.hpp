@@ -50,6 +50,10 @@ struct MaskMoments {
 };
 MaskMoments moments(const Mask& m);
 
+// `src`, a mask in work coordinates at scale `from` (see WorkFrame), at scale `to`: each pixel
+// takes the value of the `from` pixel under its centre.
+void rescale(const Mask& src, int from, int to, Mask& dst);
+
 // The operations, with their scratch buffers (one instance per stream).
 class MaskOps {
  public:

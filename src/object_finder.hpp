@@ -10,6 +10,7 @@
 #include "mask.hpp"
 #include "motion_detector.hpp"
 #include "region_labels.hpp"
+#include "work_frame.hpp"
 
 namespace projtrack {
 
@@ -24,10 +25,14 @@ struct FinderParams {
   // A candidate found by motion or by colour must have at least this share of its sampled
   // pixels moving: a static region (the background, a table) is never taken for the object.
   double min_moving = 0.02;
+  // The finder reads the whole frame at a scale that makes it about this many work pixels.
+  double work_pixels = 80000;
 };
 
+// Every silhouette it finds is in work coordinates at scale() (see WorkFrame).
 class ObjectFinder {
  public:
+  int scale() const { return work_.scale(); }
   // The object around `seed`: the 4-connected region of colours not seen on the frame's border
   // (a held object is in the middle of the picture; the wall, the table and the arm that holds
   // it reach the border), the nearest one when the seed's own colour is seen there, its holes
@@ -40,19 +45,29 @@ class ObjectFinder {
   bool from_motion(const ColorView& frame, const MotionDetector::Motion& motion,
                    const FinderParams& p, Mask& out, Point2i& seed, std::string& why);
   // An object seen before: of the regions whose colours the model finds object-like, the one
-  // closest in size to `area` (within `factor`) and nearest `near`, that moves.
+  // closest in size to `area` (frame px², within `factor`) and nearest `near`, that moves.
   bool from_model(const ColorView& frame, const AppearanceModel& model,
                   const MotionDetector::Motion& motion, double area, double factor, Point2d near,
                   const FinderParams& p, Mask& out, Point2i& seed, std::string& why);
 
  private:
-  // The pixels whose colours are not seen on the border, into candidates_ (frame-sized).
-  void foreground(const ColorView& frame, const FinderParams& p);
+  // The whole frame at the finder's scale, into work_.
+  void load(const ColorView& frame, const FinderParams& p);
+  // The pixels whose colours are not seen on the border, into candidates_.
+  void foreground(const FinderParams& p);
+  // Moving samples per labelled region, and the frame area a work pixel stands for.
+  void count_motion(const MotionDetector::Motion& motion);
   // Picks the best labelled region of candidates_ by `score` (higher is better, < 0 refused).
   template <class Score>
   int best_region(Score&& score);
   void copy_region(int label, Mask& out);
 
+  struct RegionStats {
+    std::int64_t size = 0;
+    Rect box;
+  };
+  std::vector<RegionStats> stats_;
+  std::vector<BoundsAccumulator> bounds_;
   std::vector<std::uint32_t> border_counts_;
   std::vector<std::uint8_t> background_;  // per colour bin
   std::vector<std::uint8_t> like_;
@@ -60,6 +75,7 @@ class ObjectFinder {
   RegionLabels regions_;
   std::vector<std::int64_t> moving_;
   MaskOps ops_;
+  WorkFrame work_;
 };
 
 }  // namespace projtrack

@@ -16,9 +16,8 @@ void embed(const Mask& src, const Rect& r, Mask& dst) {
                 dst.row(y - r.y) + (common.x - r.x));
 }
 
-Rect grown(const Rect& r, int by, const ImageView& frame) {
-  return clip_to_frame({r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by}, frame.width,
-                       frame.height);
+Rect grown(const Rect& r, int by) {
+  return {r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by};
 }
 
 int at_least(double share, double area, int floor) {
@@ -37,6 +36,10 @@ int depth_at(const Mask& m, Point2i p, int limit) {
   return limit;
 }
 
+int margin_for(const MaskMoments& m, int reach, const ObjectModelParams& p) {
+  return std::max(4, static_cast<int>(p.margin * std::max(m.bbox.width, m.bbox.height))) + reach;
+}
+
 }  // namespace
 
 void ObjectModel::reset() {
@@ -44,24 +47,37 @@ void ObjectModel::reset() {
   silhouette_.reset({});
 }
 
-void ObjectModel::learn(const ColorView& frame, const Mask& object, const Mask& silhouette,
-                        double ring, double rate) {
-  const int width = at_least(ring, moments(silhouette).area, 8);
-  embed(silhouette, grown(silhouette.rect(), width, frame.luma), grown_);
+Point2i ObjectModel::to_work(Point2i p) const {
+  const auto down = [&](int v) { return v >= 0 ? v / scale_ : -((-v + scale_ - 1) / scale_); };
+  return {down(p.x), down(p.y)};
+}
+
+void ObjectModel::load(const ColorView& frame, const Rect& box, int margin, double area,
+                       const ObjectModelParams& p) {
+  work_.build(frame, scale_, grown(box, std::max(margin, at_least(p.ring, area, 3))));
+}
+
+void ObjectModel::learn(const Mask& object, const Mask& silhouette, double ring, double rate) {
+  // The ring starts at the silhouette's convex hull: what the silhouette missed in its
+  // concavities (a print at its outline, a shadowed part) may be the object's and must not be
+  // learned as its surroundings.
+  const int width = at_least(ring, moments(silhouette).area, 3);
+  ops_.convex_hull(silhouette, hull_);
+  embed(hull_, grown(silhouette.rect(), width) & work_.rect(), grown_);
   ops_.dilate(grown_, width, ring_);
   for (int y = 0; y < ring_.rect().height; ++y) {
     std::uint8_t* r = ring_.row(y);
     const std::uint8_t* s = grown_.row(y);
     for (int x = 0; x < ring_.rect().width; ++x) r[x] &= !s[x];
   }
-  appearance_.learn(frame, object, ring_, rate);
+  appearance_.learn(work_.view(), {work_.rect().x, work_.rect().y}, object, ring_, rate);
 }
 
-bool ObjectModel::segment(const ColorView& frame, EdgeSource& edges, const Rect& roi,
-                          const Mask& prior, double area, Point2i hint, int reach,
-                          const ObjectModelParams& p, Mask& out) {
-  const ImageView e = edges.region(roi);
-  appearance_.likelihood(frame, roi, likelihood_);
+bool ObjectModel::segment(EdgeSource& edges, const Mask& prior, double area, Point2i hint,
+                          int reach, const ObjectModelParams& p, Mask& out) {
+  const Rect& roi = work_.rect();
+  const ImageView e = edges.work(work_, edge_map_, edge_buffer_);
+  appearance_.likelihood(work_.view(), {roi.x, roi.y}, roi, likelihood_);
   SilhouetteParams sp;
   sp.reach = reach;
   sp.small_region = p.small_region;
@@ -69,32 +85,41 @@ bool ObjectModel::segment(const ColorView& frame, EdgeSource& edges, const Rect&
          moments(out).area > 0;
 }
 
-void ObjectModel::take_unseen_inside(const ColorView& frame, Point2i seed, Mask& s) {
-  // The core's colours are not all the object's (a print elsewhere on it): a colour the model
-  // has not seen at all, within the convex hull of what the core's colours found, is the
-  // object's too. What sticks out of that hull (the hand that holds the object) is not taken.
+void ObjectModel::take_unknown_inside(Point2i seed, Mask& s) {
+  // The core's colours are not all the object's (a print elsewhere on it): a colour not seen
+  // more around the object than on it, within the convex hull of what the core's colours found,
+  // is the object's too. What sticks out of that hull (the hand that holds the object) is not.
   ops_.convex_hull(s, grown_);
   const Rect& r = s.rect();
-  appearance_.seen(frame, r, likelihood_);
+  appearance_.surroundings_like(work_.view(), {work_.rect().x, work_.rect().y}, r, likelihood_);
   for (int y = 0; y < r.height; ++y) {
     std::uint8_t* o = s.row(y);
     const std::uint8_t* hull = grown_.row(y);
-    const std::uint8_t* known = likelihood_.data() + static_cast<std::size_t>(y) * r.width;
+    const std::uint8_t* around = likelihood_.data() + static_cast<std::size_t>(y) * r.width;
     for (int x = 0; x < r.width; ++x)
-      if (hull[x] && !known[x]) o[x] = 1;
+      if (hull[x] && !around[x]) o[x] = 1;
   }
   if (!ops_.keep_component(s, seed)) ops_.keep_component(s, ops_.deepest(s).first);
   ops_.fill_holes(s);
 }
 
-bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& first, Point2i seed,
-                        const ObjectModelParams& p, Mask& out) {
-  const MaskMoments m0 = moments(first);
+bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& first,
+                        int first_scale, Point2i seed_pixel, const ObjectModelParams& p,
+                        Mask& out) {
+  const double frame_area = moments(first).area * first_scale * first_scale;
+  if (frame_area <= 0) return false;
+  scale_ = work_scale(frame_area, p.work_pixels);
+  rescale(first, first_scale, scale_, prior_);
+  const MaskMoments m0 = moments(prior_);
   if (m0.area <= 0) return false;
-  if (!first.at(seed)) seed = ops_.deepest(first).first;
-  const int radius = std::max(depth_at(first, seed, first.rect().width + first.rect().height),
+  Point2i seed = to_work(seed_pixel);
+  if (!prior_.at(seed)) seed = ops_.deepest(prior_).first;
+  const int reach = at_least(2 * p.reach, m0.area, 2);
+  load(frame, m0.bbox, margin_for(m0, reach, p), m0.area, p);
+  // The core: the disc around the seed, within the first silhouette.
+  const int radius = std::max(depth_at(prior_, seed, prior_.rect().width + prior_.rect().height),
                               at_least(p.core, m0.area, 1));
-  embed(first, first.rect(), core_);
+  embed(prior_, prior_.rect(), core_);
   for (int y = 0; y < core_.rect().height; ++y) {
     std::uint8_t* c = core_.row(y);
     const long long dy = y + core_.rect().y - seed.y;
@@ -103,38 +128,33 @@ bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& f
       if (dx * dx + dy * dy > 1LL * radius * radius) c[x] = 0;
     }
   }
-  // The first silhouette's concavities may be the object's parts the border rule left out:
-  // they are not its surroundings either.
-  ops_.convex_hull(first, prior_);
-  learn(frame, core_, prior_, p.ring, 1.0);
-  embed(first, first.rect(), prior_);
+  learn(core_, prior_, p.ring, 1.0);
   for (int round = 0; round < std::max(1, p.start_rounds); ++round) {
     const MaskMoments m = moments(prior_);
-    // The first silhouette may be a fragment of the object: let it grow further than a frame's
-    // motion would.
-    const int reach = at_least(2 * p.reach, m.area, 8);
-    const int margin =
-        std::max(16, static_cast<int>(p.margin * std::max(m.bbox.width, m.bbox.height))) + reach;
-    const Rect roi = grown(m.bbox, margin, frame.luma);
-    if (!segment(frame, edges, roi, prior_, m.area, seed, reach, p, out)) return false;
-    if (round == 0) take_unseen_inside(frame, seed, out);
-    ops_.erode(out, 2, core_);
-    learn(frame, moments(core_).area > 0 ? core_ : out, out, p.ring, 1.0);
+    if (!segment(edges, prior_, m.area, seed, at_least(2 * p.reach, m.area, 2), p, out)) {
+      silhouette_.reset({});
+      return false;
+    }
+    if (round == 0) take_unknown_inside(seed, out);
+    ops_.erode(out, 1, core_);
+    learn(moments(core_).area > 0 ? core_ : out, out, p.ring, 1.0);
     embed(out, out.rect(), prior_);
   }
   embed(out, out.rect(), silhouette_);
   return true;
 }
 
-bool ObjectModel::resume(const ColorView& frame, EdgeSource& edges, const Mask& first, Point2i seed,
-                         const ObjectModelParams& p, Mask& out) {
-  const MaskMoments m = moments(first);
-  if (m.area <= 0 || !knows_colours()) return false;
-  const int reach = at_least(2 * p.reach, m.area, 8);
-  const int margin =
-      std::max(16, static_cast<int>(p.margin * std::max(m.bbox.width, m.bbox.height))) + reach;
-  if (!segment(frame, edges, grown(m.bbox, margin, frame.luma), first, m.area, seed, reach, p, out))
-    return false;
+bool ObjectModel::resume(const ColorView& frame, EdgeSource& edges, const Mask& first,
+                         int first_scale, Point2i seed_pixel, const ObjectModelParams& p,
+                         Mask& out) {
+  const double frame_area = moments(first).area * first_scale * first_scale;
+  if (frame_area <= 0 || !knows_colours()) return false;
+  scale_ = work_scale(frame_area, p.work_pixels);
+  rescale(first, first_scale, scale_, prior_);
+  const MaskMoments m = moments(prior_);
+  const int reach = at_least(2 * p.reach, m.area, 2);
+  load(frame, m.bbox, margin_for(m, reach, p), m.area, p);
+  if (!segment(edges, prior_, m.area, to_work(seed_pixel), reach, p, out)) return false;
   embed(out, out.rect(), silhouette_);
   return true;
 }
@@ -144,29 +164,32 @@ bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion
   if (!tracking()) return false;
   const MaskMoments m = moments(silhouette_);
   embed(silhouette_, silhouette_.rect(), prior_);
-  const Point2i shift = round_to_pixel(motion);
+  const Point2i shift = round_to_pixel({motion.x / scale_, motion.y / scale_});
   prior_.translate(shift.x, shift.y);
   const Rect box{m.bbox.x + shift.x, m.bbox.y + shift.y, m.bbox.width, m.bbox.height};
-  const int reach = at_least(p.reach, m.area, 8);
-  int margin = std::max(16, static_cast<int>(p.margin * std::max(box.width, box.height))) + reach;
+  const int reach = at_least(p.reach, m.area, 2);
+  int margin = margin_for(m, reach, p);
+  const Rect frame_work = {0, 0, (frame.luma.width + scale_ - 1) / scale_,
+                           (frame.luma.height + scale_ - 1) / scale_};
   for (int attempt = 0;; ++attempt) {
-    const Rect roi = grown(box, margin, frame.luma);
-    if (roi.empty() || !segment(frame, edges, roi, prior_, m.area, hint, reach, p, out))
+    load(frame, box, margin, m.area, p);
+    if (work_.rect().empty() ||
+        !segment(edges, prior_, m.area, hint.x >= 0 ? to_work(hint) : hint, reach, p, out))
       return false;
     // A silhouette that reaches the region's border (where it is not the frame's) was cut by
     // it: search once more in a region twice as wide.
-    const Rect b = moments(out).bbox;
+    const Rect b = moments(out).bbox, roi = work_.rect();
     const bool cut = (b.x == roi.x && roi.x > 0) || (b.y == roi.y && roi.y > 0) ||
-                     (b.right() == roi.right() && roi.right() < frame.luma.width) ||
-                     (b.bottom() == roi.bottom() && roi.bottom() < frame.luma.height);
+                     (b.right() == roi.right() && roi.right() < frame_work.width) ||
+                     (b.bottom() == roi.bottom() && roi.bottom() < frame_work.height);
     if (!cut || attempt == 1) return true;
     margin *= 2;
   }
 }
 
-void ObjectModel::accept(const ColorView& frame, const Mask& s, const ObjectModelParams& p) {
-  ops_.erode(s, 2, core_);
-  learn(frame, moments(core_).area > 0 ? core_ : s, s, p.ring, p.learning_rate);
+void ObjectModel::accept(const Mask& s, const ObjectModelParams& p) {
+  ops_.erode(s, 1, core_);
+  learn(moments(core_).area > 0 ? core_ : s, s, p.ring, p.learning_rate);
   embed(s, s.rect(), silhouette_);
 }
 

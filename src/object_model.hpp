@@ -1,5 +1,7 @@
 // The object as the tracker knows it between frames: its silhouette and its colours against its
 // surroundings'. Finds the object's silhouette on each new frame near the last one, and learns.
+// It works at a scale picked from the object's size (see WorkFrame): its masks are in work
+// coordinates at scale().
 #pragma once
 
 #include <cstdint>
@@ -10,10 +12,13 @@
 #include "edge_source.hpp"
 #include "mask.hpp"
 #include "silhouette.hpp"
+#include "work_frame.hpp"
 
 namespace projtrack {
 
 struct ObjectModelParams {
+  // The working scale makes the object about this many work pixels (whole pixels when smaller).
+  double work_pixels = 6000;
   // The surroundings the colours are learned against: a ring this share of √area wide around
   // the silhouette (at least 8 px). Wide enough to take in the hand that holds the object.
   double ring = 0.5;
@@ -24,8 +29,8 @@ struct ObjectModelParams {
   int start_rounds = 3;  // rounds of segmenting and learning on the first frame
   // How fast the colours follow the object's: the share of this frame in the model.
   double learning_rate = 0.05;
-  // The silhouette may move this share of √area (at least 8 px) beyond the last one moved by the
-  // object's motion; the region searched is its box grown by `margin` of its larger side.
+  // The silhouette may move this share of √area (at least 2 work px) beyond the last one moved
+  // by the object's motion; the region searched is its box grown by `margin` of its larger side.
   double reach = 0.08;
   double margin = 0.25;
   // Edge-bounded regions under this share of the expected area are taken or left whole.
@@ -40,39 +45,50 @@ class ObjectModel {
   void lose() { silhouette_.reset({}); }
   bool tracking() const { return !silhouette_.empty(); }
   bool knows_colours() const { return !appearance_.empty(); }
+  int scale() const { return scale_; }
+  // The last silhouette, in work coordinates at scale().
   const Mask& silhouette() const { return silhouette_; }
   const AppearanceModel& appearance() const { return appearance_; }
 
-  // Starts from a first silhouette found around `seed`: learns the colours of its core against
-  // its surroundings, then segments and learns again on this frame. Holds the result as the
-  // silhouette and puts it in `out`; false when nothing is left of the object.
-  bool start(const ColorView& frame, EdgeSource& edges, const Mask& first, Point2i seed,
-             const ObjectModelParams& p, Mask& out);
+  // Starts from a first silhouette `first` (work coordinates at `first_scale`) found around
+  // `seed` (a frame pixel): learns the colours of its core against its surroundings, then
+  // segments and learns again on this frame. Holds the result as the silhouette and puts it in
+  // `out`; false when nothing is left of the object.
+  bool start(const ColorView& frame, EdgeSource& edges, const Mask& first, int first_scale,
+             Point2i seed, const ObjectModelParams& p, Mask& out);
   // Resumes an object found again by its colours around `first`: segments with the colours it
   // knows (learning nothing until accept()) and holds the result as the silhouette.
-  bool resume(const ColorView& frame, EdgeSource& edges, const Mask& first, Point2i seed,
-              const ObjectModelParams& p, Mask& out);
-  // This frame's silhouette near the last one moved by `motion` (px), holding `hint` when it can
-  // (the inner point). Learns nothing and keeps the last silhouette: see accept().
+  bool resume(const ColorView& frame, EdgeSource& edges, const Mask& first, int first_scale,
+              Point2i seed, const ObjectModelParams& p, Mask& out);
+  // This frame's silhouette near the last one moved by `motion` (frame px), holding `hint` (a
+  // frame pixel: the inner point) when it can. Learns nothing and keeps the last silhouette.
   bool find(const ColorView& frame, EdgeSource& edges, Point2d motion, Point2i hint,
             const ObjectModelParams& p, Mask& out);
-  // Takes `s` as the object's silhouette and learns its colours at `p.learning_rate`.
-  void accept(const ColorView& frame, const Mask& s, const ObjectModelParams& p);
+  // Takes `s` (this frame's silhouette from find()) as the object's and learns its colours at
+  // `p.learning_rate`.
+  void accept(const Mask& s, const ObjectModelParams& p);
 
  private:
-  // Learns the colours of `object` against a ring around `silhouette`.
-  void learn(const ColorView& frame, const Mask& object, const Mask& silhouette, double ring,
-             double rate);
-  // Adds to `s` the pixels inside its convex hull whose colours the model has not seen.
-  void take_unseen_inside(const ColorView& frame, Point2i seed, Mask& s);
-  bool segment(const ColorView& frame, EdgeSource& edges, const Rect& roi, const Mask& prior,
-               double area, Point2i hint, int reach, const ObjectModelParams& p, Mask& out);
+  // The work frame of `box` (work coordinates) grown by enough for the search and the ring.
+  void load(const ColorView& frame, const Rect& box, int margin, double area,
+            const ObjectModelParams& p);
+  // Learns the colours of `object` against a ring around the convex hull of `silhouette` (on this
+  // frame's work frame).
+  void learn(const Mask& object, const Mask& silhouette, double ring, double rate);
+  bool segment(EdgeSource& edges, const Mask& prior, double area, Point2i hint, int reach,
+               const ObjectModelParams& p, Mask& out);
+  // Adds to `s` the pixels inside its convex hull whose colours are not the surroundings'.
+  void take_unknown_inside(Point2i seed, Mask& s);
+  Point2i to_work(Point2i frame_pixel) const;
 
   AppearanceModel appearance_;
   SilhouetteSegmenter segmenter_;
+  WorkFrame work_;
+  EdgeMap edge_map_;
   MaskOps ops_;
-  Mask silhouette_, prior_, core_, grown_, ring_;
-  std::vector<std::uint8_t> likelihood_;
+  int scale_ = 1;
+  Mask silhouette_, prior_, core_, grown_, ring_, hull_;
+  std::vector<std::uint8_t> likelihood_, edge_buffer_;
 };
 
 }  // namespace projtrack

@@ -207,8 +207,10 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
     }
   }
   if (!found) return false;
-  const bool ok = resumed ? object_.resume(frame, edges, first_, seed, tp.object, silhouette_)
-                          : object_.start(frame, edges, first_, seed, tp.object, silhouette_);
+  const int scale = finder_.scale();
+  const bool ok = resumed
+                      ? object_.resume(frame, edges, first_, scale, seed, tp.object, silhouette_)
+                      : object_.start(frame, edges, first_, scale, seed, tp.object, silhouette_);
   if (!ok) why = "nothing of the object's colours is left around it";
   return ok;
 }
@@ -220,13 +222,19 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
   Params closed = params;
   closed.area_limit = 0;
   closed.max_gap = 1;
-  // One estimate per piece, each on its piece alone as an edge map (every pixel out of it is an
-  // edge), with one pixel of margin so that fills stop at it and rays end on it; the largest
-  // piece first, from the track's inner point when it is in it; the features add up.
-  const int n = pieces_.split(silhouette_, std::max(1, params.grid_size / 2), 0.03);
-  const Rect r = clip_to_frame({silhouette_.rect().x - 1, silhouette_.rect().y - 1,
-                                silhouette_.rect().width + 2, silhouette_.rect().height + 2},
-                               width, height);
+  // One estimate per piece, each at full resolution on its piece alone as an edge map (every
+  // pixel out of it is an edge), with one pixel of margin so that fills stop at it and rays end
+  // on it; the largest piece first, from the track's inner point when it is in it; the features
+  // add up. The pieces are found at the object model's work scale.
+  const int s = object_.scale();
+  const int n = pieces_.split(silhouette_, std::max(1, params.grid_size / (2 * s)), 0.03);
+  const Rect r = clip_to_frame(
+      [&] {
+        Rect f = to_frame(silhouette_.rect(), s, width, height);
+        return Rect{f.x - 1, f.y - 1, f.width + 2, f.height + 2};
+      }(),
+      width, height);
+  const auto work_of = [s](int v) { return v < 0 ? -1 : v / s; };
   Features total;
   double sx = 0, sy = 0;
   BoundsAccumulator box, reach;
@@ -235,11 +243,15 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
     barrier_.assign(static_cast<std::size_t>(r.width) * r.height, 255);
     for (int y = r.y; y < r.bottom(); ++y) {
       std::uint8_t* b = barrier_.data() + static_cast<std::size_t>(y - r.y) * r.width - r.x;
+      const int wy = work_of(y);
       for (int x = r.x; x < r.right(); ++x)
-        if (piece.at({x, y})) b[x] = 0;
+        if (piece.at({work_of(x), wy})) b[x] = 0;
     }
+    const Point2i deep = pieces_.deepest(k);
     const Point2i start =
-        k == 0 && inner_ && pieces_.piece_at(*inner_) == 0 ? *inner_ : pieces_.deepest(k);
+        k == 0 && inner_ && pieces_.piece_at({work_of(inner_->x), work_of(inner_->y)}) == 0
+            ? *inner_
+            : Point2i{deep.x * s + s / 2, deep.y * s + s / 2};
     Trace* t = k == 0 ? trace : (trace ? &piece_trace_ : nullptr);
     Features f = estimator(m).estimate(ImageView(barrier_.data(), r.width, r.height, r.width),
                                        {start.x - r.x, start.y - r.y}, closed, t);
@@ -271,7 +283,14 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
   if (total.area > 0) total.centroid = {sx / total.area, sy / total.area};
   total.bbox = box.rect();
   total.reach = reach.rect();
-  if (trace) ops_.outline(silhouette_, trace->outline);
+  if (trace) {  // the outline at full resolution: pixels in, with a 4-neighbour out
+    trace->outline.clear();
+    const auto in = [&](int x, int y) { return silhouette_.at({work_of(x), work_of(y)}); };
+    for (int y = r.y; y < r.bottom(); ++y)
+      for (int x = r.x; x < r.right(); ++x)
+        if (in(x, y) && (!in(x - 1, y) || !in(x + 1, y) || !in(x, y - 1) || !in(x, y + 1)))
+          trace->outline.push_back({x, y});
+  }
   if (total.valid()) total.status = border_status(total.bbox, width, height);
   return total;
 }
@@ -323,7 +342,7 @@ TrackResult Tracker::track_appearance(const ColorView& frame, EdgeSource& edges,
     refuse(std::move(why), tp, r);
     return r;
   }
-  object_.accept(frame, silhouette_, tp.object);
+  object_.accept(silhouette_, tp.object);
   accept(f, t, w, h, tp, false, r);
   return r;
 }

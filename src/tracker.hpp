@@ -47,9 +47,6 @@ class Tracker {
   // Forgets the object; Auto and Center acquisition start over.
   void reset();
   const std::optional<Point2i>& inner_point() const { return inner_; }
-  // The object's silhouette on the last tracked frame (ObjectModelKind::Appearance; empty
-  // otherwise or when there is none).
-  const Mask& silhouette() const { return object_.silhouette(); }
 
   // One frame taken at `t` seconds, with edges computed here with `edge_params`: only around the
   // object while tracking. A frame with chroma gives the appearance model its colours; a gray

@@ -1,0 +1,79 @@
+#include "work_frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace projtrack {
+
+namespace {
+
+int floor_div(long long a, int b) { return static_cast<int>(a >= 0 ? a / b : -((-a + b - 1) / b)); }
+
+}  // namespace
+
+int work_scale(double pixels, double target) {
+  if (!(pixels > 0) || !(target > 0)) return 1;
+  return std::max(1, static_cast<int>(std::lround(std::sqrt(pixels / target))));
+}
+
+Rect to_work(const Rect& r, int scale) {
+  const int s = std::max(1, scale);
+  const int x0 = floor_div(r.x, s), y0 = floor_div(r.y, s);
+  const int x1 = floor_div(static_cast<long long>(r.x) + r.width + s - 1, s);
+  const int y1 = floor_div(static_cast<long long>(r.y) + r.height + s - 1, s);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+Rect to_frame(const Rect& r, int scale, int width, int height) {
+  const long long s = std::max(1, scale);
+  const auto clamp_int = [](long long v) {
+    return static_cast<int>(std::clamp<long long>(v, -(1LL << 30), 1LL << 30));
+  };
+  return clip_to_frame(
+      {clamp_int(r.x * s), clamp_int(r.y * s), clamp_int(r.width * s), clamp_int(r.height * s)},
+      width, height);
+}
+
+void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
+  scale_ = std::max(1, scale);
+  const int s = scale_, fw = frame.luma.width, fh = frame.luma.height;
+  rect_ = region & Rect{0, 0, (fw + s - 1) / s, (fh + s - 1) / s};
+  const int w = rect_.width, h = rect_.height;
+  const std::size_t n = static_cast<std::size_t>(std::max(0, w)) * std::max(0, h);
+  const bool chroma = frame.has_chroma();
+  planes_.resize(n * (chroma ? 3 : 1) + static_cast<std::size_t>(std::max(0, w)) * 4);
+  view_ = {};
+  if (n == 0) return;
+  std::uint8_t* luma = planes_.data();
+  // Row sums of each block, then the mean: the frame is read once, row by row.
+  auto* sums = reinterpret_cast<std::uint32_t*>(planes_.data() + n * (chroma ? 3 : 1));
+  for (int y = 0; y < h; ++y) {
+    const int fy0 = (rect_.y + y) * s, fy1 = std::min(fh, fy0 + s);
+    const int fx0 = rect_.x * s, fx1 = std::min(fw, (rect_.x + w) * s);
+    std::fill(sums, sums + w, 0u);
+    for (int fy = fy0; fy < fy1; ++fy) {
+      const std::uint8_t* row = frame.luma.row(fy);
+      for (int fx = fx0; fx < fx1; ++fx) sums[(fx - fx0) / s] += row[fx];
+    }
+    std::uint8_t* out = luma + static_cast<std::size_t>(y) * w;
+    for (int x = 0; x < w; ++x) {
+      const int bx0 = fx0 + x * s, count = (std::min(fx1, bx0 + s) - bx0) * (fy1 - fy0);
+      out[x] = static_cast<std::uint8_t>(count > 0 ? (sums[x] + count / 2) / count : 0);
+    }
+  }
+  view_.luma = ImageView(luma, w, h, w);
+  if (!chroma) return;
+  std::uint8_t* u = luma + n;
+  std::uint8_t* v = u + n;
+  for (int y = 0; y < h; ++y) {
+    const int cy = std::min(fh - 1, (rect_.y + y) * s + s / 2);
+    for (int x = 0; x < w; ++x) {
+      const int cx = std::min(fw - 1, (rect_.x + x) * s + s / 2);
+      u[static_cast<std::size_t>(y) * w + x] = frame.chroma.u_at(cx, cy);
+      v[static_cast<std::size_t>(y) * w + x] = frame.chroma.v_at(cx, cy);
+    }
+  }
+  view_.chroma = {u, v, w, 1, 0, 0};
+}
+
+}  // namespace projtrack
