@@ -112,72 +112,59 @@ bool MaskOps::keep_component(Mask& m, Point2i p) {
   return true;
 }
 
-// Each pixel of `dst` counts the set pixels of `src` within r along its row (outside = unset);
-// `all` asks for every one of the 2r + 1 to be set (erosion) rather than any (dilation).
-void MaskOps::spread_rows(const Mask& src, int r, Mask& dst) {
+// Chebyshev dilation by r (or, with `invert`, the same of the unset pixels and everything outside
+// the mask, which is the complement of the erosion): along each row, then each column, a pixel
+// is reached when the nearest seed in that direction lies within r.
+void MaskOps::spread(const Mask& src, int r, bool invert, Mask& dst) {
   const Rect& rect = src.rect();
-  dst.reset(rect);
-  const int w = rect.width;
-  counts_.resize(static_cast<std::size_t>(w) + 1);
-  for (int y = 0; y < rect.height; ++y) {
-    const std::uint8_t* s = src.row(y);
-    counts_[0] = 0;
-    for (int x = 0; x < w; ++x) counts_[x + 1] = counts_[x] + (s[x] != 0);
-    std::uint8_t* d = dst.row(y);
-    for (int x = 0; x < w; ++x)
-      d[x] = static_cast<std::uint8_t>(
-          std::min(counts_[std::min(w, x + r + 1)] - counts_[std::max(0, x - r)], 255));
-  }
-}
-
-void MaskOps::spread_columns(Mask& m, int r) {
-  const Rect& rect = m.rect();
   const int w = rect.width, h = rect.height;
-  tmp_.reset(rect);
-  counts_.assign(static_cast<std::size_t>(w), 0);  // per column: set rows in the window
-  for (int y = 0; y < std::min(r, h); ++y) {
-    const std::uint8_t* s = m.row(y);
-    for (int x = 0; x < w; ++x) counts_[x] += s[x] != 0;
-  }
+  dst.reset(rect);
+  if (w == 0 || h == 0) return;
+  const std::uint8_t seed = invert ? 0 : 1;
   for (int y = 0; y < h; ++y) {
-    if (y + r < h) {
-      const std::uint8_t* add = m.row(y + r);
-      for (int x = 0; x < w; ++x) counts_[x] += add[x] != 0;
+    const std::uint8_t* in = src.row(y);
+    std::uint8_t* out = dst.row(y);
+    int last = invert ? -1 : -r - 1;  // outside the mask is a seed of the complement
+    for (int x = 0; x < w; ++x) {
+      if ((in[x] != 0) == (seed != 0)) last = x;
+      out[x] = x - last <= r;
     }
-    if (y - r - 1 >= 0) {
-      const std::uint8_t* drop = m.row(y - r - 1);
-      for (int x = 0; x < w; ++x) counts_[x] -= drop[x] != 0;
+    last = invert ? w : w + r + 1;
+    for (int x = w - 1; x >= 0; --x) {
+      if ((in[x] != 0) == (seed != 0)) last = x;
+      out[x] |= last - x <= r;
     }
-    std::uint8_t* d = tmp_.row(y);
-    for (int x = 0; x < w; ++x) d[x] = static_cast<std::uint8_t>(std::min(counts_[x], 255));
   }
-  m.swap(tmp_);
+  // Columns, row by row: distance to the nearest reached row above, then below (saturated at
+  // r + 1, in bytes, so that the loops vectorise).
+  const int cap = std::min(r, 254) + 1;
+  column_.assign(static_cast<std::size_t>(w), static_cast<std::uint8_t>(invert ? 0 : cap));
+  tmp_.reset(rect);
+  const auto pass = [&](int y) {
+    const std::uint8_t* in = dst.row(y);
+    std::uint8_t* out = tmp_.row(y);
+    std::uint8_t* d = column_.data();
+    for (int x = 0; x < w; ++x) {
+      const int next = d[x] + 1;
+      d[x] = static_cast<std::uint8_t>(in[x] ? 0 : (next < cap ? next : cap));
+      out[x] |= static_cast<std::uint8_t>(d[x] < cap);
+    }
+  };
+  for (int y = 0; y < h; ++y) pass(y);
+  std::fill(column_.begin(), column_.end(), static_cast<std::uint8_t>(invert ? 0 : cap));
+  for (int y = h - 1; y >= 0; --y) pass(y);
+  dst.swap(tmp_);
+  if (invert) {
+    for (int y = 0; y < h; ++y) {
+      std::uint8_t* out = dst.row(y);
+      for (int x = 0; x < w; ++x) out[x] = !out[x];
+    }
+  }
 }
 
-void MaskOps::dilate(const Mask& src, int r, Mask& dst) {
-  r = std::max(0, r);
-  spread_rows(src, r, dst);
-  spread_columns(dst, r);
-  for (int y = 0; y < dst.rect().height; ++y) {
-    std::uint8_t* d = dst.row(y);
-    for (int x = 0; x < dst.rect().width; ++x) d[x] = d[x] != 0;
-  }
-}
+void MaskOps::dilate(const Mask& src, int r, Mask& dst) { spread(src, std::max(0, r), false, dst); }
 
-void MaskOps::erode(const Mask& src, int r, Mask& dst) {
-  r = std::max(0, r);
-  const int full = 2 * r + 1;
-  spread_rows(src, r, dst);
-  for (int y = 0; y < dst.rect().height; ++y) {  // rows whose whole run is set
-    std::uint8_t* d = dst.row(y);
-    for (int x = 0; x < dst.rect().width; ++x) d[x] = d[x] >= full;
-  }
-  spread_columns(dst, r);
-  for (int y = 0; y < dst.rect().height; ++y) {
-    std::uint8_t* d = dst.row(y);
-    for (int x = 0; x < dst.rect().width; ++x) d[x] = d[x] >= full;
-  }
-}
+void MaskOps::erode(const Mask& src, int r, Mask& dst) { spread(src, std::max(0, r), true, dst); }
 
 std::pair<Point2i, double> MaskOps::deepest(const Mask& m) {
   const int w = m.rect().width, h = m.rect().height;

@@ -65,6 +65,7 @@ class MaskOps {
   // `dst` (on src's rectangle) = the pixels within Chebyshev distance r of a set pixel of `src`.
   void dilate(const Mask& src, int r, Mask& dst);
   // `dst` = the set pixels of `src` whose whole (2r+1)² square is set (outside counts as unset).
+  // `dst` must not be `src` in either.
   void erode(const Mask& src, int r, Mask& dst);
   // The set pixel farthest from every unset pixel (and from outside the mask), in frame
   // coordinates, with that distance in px (chamfer 3-4, within 8 %); {} and 0 for an empty mask.
@@ -77,11 +78,11 @@ class MaskOps {
  private:
   // Marks with `mark` the 4-connected run of pixels equal to `value` from p (mask coordinates).
   void flood(Mask& m, Point2i p, std::uint8_t value, std::uint8_t mark);
-  // Rows within Chebyshev distance r of a set pixel, one direction at a time.
-  void spread_rows(const Mask& src, int r, Mask& dst);
-  void spread_columns(Mask& m, int r);
+  // Dilation by r of the set pixels, or (invert) of the unset ones and the outside.
+  void spread(const Mask& src, int r, bool invert, Mask& dst);
   std::vector<Point2i> stack_, points_, hull_;
   std::vector<int> counts_, distance_;
+  std::vector<std::uint8_t> column_;
   Mask tmp_;
 };
 

@@ -53,8 +53,9 @@ Point2i ObjectModel::to_work(Point2i p) const {
 }
 
 void ObjectModel::load(const ColorView& frame, const Rect& box, int margin, double area,
-                       const ObjectModelParams& p) {
-  work_.build(frame, scale_, grown(box, std::max(margin, at_least(p.ring, area, 3))));
+                       bool learning, const ObjectModelParams& p) {
+  const int ring = learning ? at_least(p.ring, area, 3) : 0;
+  work_.build(frame, scale_, grown(box, std::max(margin, ring)));
 }
 
 void ObjectModel::learn(const Mask& object, const Mask& silhouette, double ring, double rate) {
@@ -115,7 +116,8 @@ bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& f
   Point2i seed = to_work(seed_pixel);
   if (!prior_.at(seed)) seed = ops_.deepest(prior_).first;
   const int reach = at_least(2 * p.reach, m0.area, 2);
-  load(frame, m0.bbox, margin_for(m0, reach, p), m0.area, p);
+  load(frame, m0.bbox, margin_for(m0, reach, p), m0.area, true, p);
+  unlearned_ = 0;
   // The core: the disc around the seed, within the first silhouette.
   const int radius = std::max(depth_at(prior_, seed, prior_.rect().width + prior_.rect().height),
                               at_least(p.core, m0.area, 1));
@@ -153,7 +155,8 @@ bool ObjectModel::resume(const ColorView& frame, EdgeSource& edges, const Mask& 
   rescale(first, first_scale, scale_, prior_);
   const MaskMoments m = moments(prior_);
   const int reach = at_least(2 * p.reach, m.area, 2);
-  load(frame, m.bbox, margin_for(m, reach, p), m.area, p);
+  load(frame, m.bbox, margin_for(m, reach, p), m.area, true, p);
+  unlearned_ = std::max(0, p.learn_every - 1);  // learn on the first accepted frame
   if (!segment(edges, prior_, m.area, to_work(seed_pixel), reach, p, out)) return false;
   embed(out, out.rect(), silhouette_);
   return true;
@@ -172,7 +175,7 @@ bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion
   const Rect frame_work = {0, 0, (frame.luma.width + scale_ - 1) / scale_,
                            (frame.luma.height + scale_ - 1) / scale_};
   for (int attempt = 0;; ++attempt) {
-    load(frame, box, margin, m.area, p);
+    load(frame, box, margin, m.area, unlearned_ + 1 >= p.learn_every, p);
     if (work_.rect().empty() ||
         !segment(edges, prior_, m.area, hint.x >= 0 ? to_work(hint) : hint, reach, p, out))
       return false;
@@ -188,8 +191,14 @@ bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion
 }
 
 void ObjectModel::accept(const Mask& s, const ObjectModelParams& p) {
-  ops_.erode(s, 1, core_);
-  learn(moments(core_).area > 0 ? core_ : s, s, p.ring, p.learning_rate);
+  const int every = std::max(1, p.learn_every);
+  if (++unlearned_ >= every) {
+    // As many frames' worth of learning at once: 1 - (1 - rate)^every.
+    const double rate = 1 - std::pow(1 - std::clamp(p.learning_rate, 0.0, 1.0), every);
+    ops_.erode(s, 1, core_);
+    learn(moments(core_).area > 0 ? core_ : s, s, p.ring, rate);
+    unlearned_ = 0;
+  }
   embed(s, s.rect(), silhouette_);
 }
 

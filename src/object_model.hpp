@@ -27,12 +27,14 @@ struct ObjectModelParams {
   // take in part of the hand, the disc does not.
   double core = 0.3;
   int start_rounds = 3;  // rounds of segmenting and learning on the first frame
-  // How fast the colours follow the object's: the share of this frame in the model.
+  // How fast the colours follow the object's: the share of one frame in the model. The model
+  // learns every `learn_every` frames (at the rate of as many frames), which costs less.
   double learning_rate = 0.05;
+  int learn_every = 3;
   // The silhouette may move this share of √area (at least 2 work px) beyond the last one moved
   // by the object's motion; the region searched is its box grown by `margin` of its larger side.
   double reach = 0.08;
-  double margin = 0.25;
+  double margin = 0.15;
   // Edge-bounded regions under this share of the expected area are taken or left whole.
   double small_region = 0.25;
 };
@@ -69,8 +71,9 @@ class ObjectModel {
   void accept(const Mask& s, const ObjectModelParams& p);
 
  private:
-  // The work frame of `box` (work coordinates) grown by enough for the search and the ring.
-  void load(const ColorView& frame, const Rect& box, int margin, double area,
+  // The work frame of `box` (work coordinates) grown by `margin`, and by the ring's width when
+  // the model learns on this frame.
+  void load(const ColorView& frame, const Rect& box, int margin, double area, bool learning,
             const ObjectModelParams& p);
   // Learns the colours of `object` against a ring around the convex hull of `silhouette` (on this
   // frame's work frame).
@@ -87,6 +90,7 @@ class ObjectModel {
   EdgeMap edge_map_;
   MaskOps ops_;
   int scale_ = 1;
+  int unlearned_ = 0;  // accepted frames since the model last learned
   Mask silhouette_, prior_, core_, grown_, ring_, hull_;
   std::vector<std::uint8_t> likelihood_, edge_buffer_;
 };

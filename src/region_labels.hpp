@@ -1,4 +1,4 @@
-// The 4-connected regions of a binary image, labelled in two passes with union-find, on buffers
+// The 4-connected regions of a binary image, labelled run by run with union-find, on buffers
 // kept between frames.
 #pragma once
 
@@ -25,6 +25,11 @@ class RegionLabels {
 
  private:
   std::int32_t find(std::int32_t a);
+  struct Run {
+    int y, x0, x1;  // a row's foreground pixels x0..x1
+    std::int32_t label;
+  };
+  std::vector<Run> runs_;
   std::vector<std::int32_t> labels_, parent_, final_, sizes_;
   int width_ = 0, height_ = 0, count_ = 0;
 };

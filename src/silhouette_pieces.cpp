@@ -51,6 +51,20 @@ int SilhouettePieces::split(const Mask& s, int neck, double min_share) {
   return static_cast<int>(order_.size());
 }
 
+int SilhouettePieces::whole(const Mask& s) {
+  rect_ = s.rect();
+  order_.assign(1, 0);
+  owner_.resize(static_cast<std::size_t>(rect_.width) * rect_.height);
+  bool any = false;
+  for (int y = 0; y < rect_.height; ++y) {
+    const std::uint8_t* in = s.row(y);
+    std::int32_t* o = owner_.data() + static_cast<std::size_t>(y) * rect_.width;
+    for (int x = 0; x < rect_.width; ++x) any |= (o[x] = in[x]) != 0;
+  }
+  if (!any) order_.clear();
+  return any ? 1 : 0;
+}
+
 const Mask& SilhouettePieces::piece(int i) {
   piece_.reset(rect_);
   for (int y = 0; y < rect_.height; ++y) {

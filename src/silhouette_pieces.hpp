@@ -18,6 +18,8 @@ class SilhouettePieces {
   // of the silhouette's area, each grown back over the silhouette (by distance within it).
   // Returns the number of pieces (0 for an empty silhouette; 1 when nothing splits it).
   int split(const Mask& s, int neck, double min_share);
+  // The whole silhouette as one piece (no split): 1, or 0 when it is empty.
+  int whole(const Mask& s);
   // Piece i (0 = the largest) as a mask over s.rect(), and the point deepest in its core.
   const Mask& piece(int i);
   Point2i deepest(int i);

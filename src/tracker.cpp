@@ -227,7 +227,10 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
   // on it; the largest piece first, from the track's inner point when it is in it; the features
   // add up. The pieces are found at the object model's work scale.
   const int s = object_.scale();
-  const int n = pieces_.split(silhouette_, std::max(1, params.grid_size / (2 * s)), 0.03);
+  // Usually one estimate covers the silhouette; only when it covers much less than the
+  // silhouette's pixels is it cut into pieces (a neck or a finger kept the estimate out).
+  const int n = split_ ? pieces_.split(silhouette_, std::max(1, params.grid_size / (2 * s)), 0.03)
+                       : pieces_.whole(silhouette_);
   const Rect r = clip_to_frame(
       [&] {
         Rect f = to_frame(silhouette_.rect(), s, width, height);
@@ -240,18 +243,31 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
   BoundsAccumulator box, reach;
   for (int k = 0; k < n; ++k) {
     const Mask& piece = pieces_.piece(k);
+    // Each work pixel of the piece clears its s×s block of frame pixels.
     barrier_.assign(static_cast<std::size_t>(r.width) * r.height, 255);
-    for (int y = r.y; y < r.bottom(); ++y) {
-      std::uint8_t* b = barrier_.data() + static_cast<std::size_t>(y - r.y) * r.width - r.x;
-      const int wy = work_of(y);
-      for (int x = r.x; x < r.right(); ++x)
-        if (piece.at({work_of(x), wy})) b[x] = 0;
+    const Rect& pr = piece.rect();
+    for (int wy = 0; wy < pr.height; ++wy) {
+      const std::uint8_t* in = piece.row(wy);
+      const int y0 = std::max(r.y, (pr.y + wy) * s), y1 = std::min(r.bottom(), (pr.y + wy + 1) * s);
+      for (int wx = 0; wx < pr.width; ++wx) {
+        if (!in[wx]) continue;
+        int run = wx;
+        while (run + 1 < pr.width && in[run + 1]) ++run;
+        const int x0 = std::max(r.x, (pr.x + wx) * s),
+                  x1 = std::min(r.right(), (pr.x + run + 1) * s);
+        for (int y = y0; y < y1 && x0 < x1; ++y)
+          std::fill_n(barrier_.data() + static_cast<std::size_t>(y - r.y) * r.width + (x0 - r.x),
+                      x1 - x0, 0);
+        wx = run;
+      }
     }
-    const Point2i deep = pieces_.deepest(k);
-    const Point2i start =
-        k == 0 && inner_ && pieces_.piece_at({work_of(inner_->x), work_of(inner_->y)}) == 0
-            ? *inner_
-            : Point2i{deep.x * s + s / 2, deep.y * s + s / 2};
+    Point2i start;
+    if (k == 0 && inner_ && pieces_.piece_at({work_of(inner_->x), work_of(inner_->y)}) == 0) {
+      start = *inner_;
+    } else {
+      const Point2i deep = pieces_.deepest(k);
+      start = {deep.x * s + s / 2, deep.y * s + s / 2};
+    }
     Trace* t = k == 0 ? trace : (trace ? &piece_trace_ : nullptr);
     Features f = estimator(m).estimate(ImageView(barrier_.data(), r.width, r.height, r.width),
                                        {start.x - r.x, start.y - r.y}, closed, t);
@@ -274,6 +290,12 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
     sy += f.area * f.centroid.y;
     box.add(f.bbox);
     reach.add(f.reach);
+  }
+  if (n == 1 && total.valid() && !split_ && total.area < 0.8 * moments(silhouette_).area * s * s) {
+    split_ = true;  // once more, in pieces
+    total = estimate_on_silhouette(m, params, width, height, trace);
+    split_ = false;
+    return total;
   }
   if (n == 0) {
     total.status = Status::EmptyImage;

@@ -106,6 +106,7 @@ class Tracker {
   Mask silhouette_, first_;
   SilhouettePieces pieces_;
   Trace piece_trace_;
+  bool split_ = false;  // estimate_on_silhouette() cuts the silhouette into pieces
   MaskOps ops_;
   std::vector<std::uint8_t> barrier_;
   double lost_area_ = 0;  // the object's area and centroid when it was lost

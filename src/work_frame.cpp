@@ -41,23 +41,43 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
   const int w = rect_.width, h = rect_.height;
   const std::size_t n = static_cast<std::size_t>(std::max(0, w)) * std::max(0, h);
   const bool chroma = frame.has_chroma();
-  planes_.resize(n * (chroma ? 3 : 1) + static_cast<std::size_t>(std::max(0, w)) * 4);
+  planes_.resize(n * (chroma ? 3 : 1));
+  sums_.resize(static_cast<std::size_t>(std::max(0, w)));
   view_ = {};
   if (n == 0) return;
   std::uint8_t* luma = planes_.data();
+  std::uint32_t* sums = sums_.data();
   // Row sums of each block, then the mean: the frame is read once, row by row.
-  auto* sums = reinterpret_cast<std::uint32_t*>(planes_.data() + n * (chroma ? 3 : 1));
+  const int fx0 = rect_.x * s, fx1 = std::min(fw, (rect_.x + w) * s);
+  const int full = std::max(0, (fx1 - fx0) / s);  // blocks with all s columns in the frame
   for (int y = 0; y < h; ++y) {
     const int fy0 = (rect_.y + y) * s, fy1 = std::min(fh, fy0 + s);
-    const int fx0 = rect_.x * s, fx1 = std::min(fw, (rect_.x + w) * s);
+    std::uint8_t* out = luma + static_cast<std::size_t>(y) * w;
+    if (s == 1) {
+      std::copy_n(frame.luma.row(fy0) + fx0, w, out);
+      continue;
+    }
+    if (s == 2 && fy1 - fy0 == 2 && full == w) {  // the common case, in one pass
+      const std::uint8_t* r0 = frame.luma.row(fy0) + fx0;
+      const std::uint8_t* r1 = frame.luma.row(fy0 + 1) + fx0;
+      for (int x = 0; x < w; ++x)
+        out[x] = static_cast<std::uint8_t>(
+            (r0[2 * x] + r0[2 * x + 1] + r1[2 * x] + r1[2 * x + 1] + 2) >> 2);
+      continue;
+    }
     std::fill(sums, sums + w, 0u);
     for (int fy = fy0; fy < fy1; ++fy) {
-      const std::uint8_t* row = frame.luma.row(fy);
-      for (int fx = fx0; fx < fx1; ++fx) sums[(fx - fx0) / s] += row[fx];
+      const std::uint8_t* row = frame.luma.row(fy) + fx0;
+      for (int x = 0; x < full; ++x, row += s) {
+        std::uint32_t sum = 0;
+        for (int k = 0; k < s; ++k) sum += row[k];
+        sums[x] += sum;
+      }
+      for (int x = full, fx = fx0 + full * s; fx < fx1; ++fx) sums[x] += frame.luma.row(fy)[fx];
     }
-    std::uint8_t* out = luma + static_cast<std::size_t>(y) * w;
+    const int rows = fy1 - fy0;
     for (int x = 0; x < w; ++x) {
-      const int bx0 = fx0 + x * s, count = (std::min(fx1, bx0 + s) - bx0) * (fy1 - fy0);
+      const int bx0 = fx0 + x * s, count = (std::min(fx1, bx0 + s) - bx0) * rows;
       out[x] = static_cast<std::uint8_t>(count > 0 ? (sums[x] + count / 2) / count : 0);
     }
   }
@@ -65,12 +85,21 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
   if (!chroma) return;
   std::uint8_t* u = luma + n;
   std::uint8_t* v = u + n;
+  // Each block's centre sample: the chroma offsets of a row's blocks are the same on every row.
+  const ChromaView& c = frame.chroma;
+  offsets_.resize(static_cast<std::size_t>(w));
+  for (int x = 0; x < w; ++x) {
+    const int cx = std::min(fw - 1, (rect_.x + x) * s + s / 2);
+    offsets_[x] = static_cast<std::ptrdiff_t>(cx >> c.shift_x) * c.pixel_stride;
+  }
   for (int y = 0; y < h; ++y) {
     const int cy = std::min(fh - 1, (rect_.y + y) * s + s / 2);
+    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(cy >> c.shift_y) * c.stride;
+    std::uint8_t* uo = u + static_cast<std::size_t>(y) * w;
+    std::uint8_t* vo = v + static_cast<std::size_t>(y) * w;
     for (int x = 0; x < w; ++x) {
-      const int cx = std::min(fw - 1, (rect_.x + x) * s + s / 2);
-      u[static_cast<std::size_t>(y) * w + x] = frame.chroma.u_at(cx, cy);
-      v[static_cast<std::size_t>(y) * w + x] = frame.chroma.v_at(cx, cy);
+      uo[x] = c.u[row + offsets_[x]];
+      vo[x] = c.v[row + offsets_[x]];
     }
   }
   view_.chroma = {u, v, w, 1, 0, 0};

@@ -24,6 +24,8 @@ class WorkFrame {
 
  private:
   std::vector<std::uint8_t> planes_;
+  std::vector<std::uint32_t> sums_;      // per block of a row
+  std::vector<std::ptrdiff_t> offsets_;  // chroma offset of each block of a row
   ColorView view_;
   Rect rect_;
   int scale_ = 1;
