@@ -47,6 +47,21 @@ void AppearanceModel::learn(const ColorView& image, Point2i origin, const Mask& 
   rebuild();
 }
 
+void AppearanceModel::learn(const ColorView& image, Point2i origin, const Mask& object,
+                            const std::vector<std::uint32_t>& surroundings) {
+  reset();
+  chroma_ = image.has_chroma();
+  count(image, origin, object, object_);
+  double objects = 0, around = 0;
+  for (float c : object_) objects += c;
+  for (std::uint32_t c : surroundings) around += c;
+  const double weight = around > 0 ? objects / around : 0;
+  for (std::size_t b = 0; b < surroundings.size() && b < surroundings_.size(); ++b)
+    surroundings_[b] = static_cast<float>(weight * surroundings[b]);
+  object_total_ = objects;
+  rebuild();
+}
+
 void AppearanceModel::rebuild() {
   // Lighting moves a colour along luma more than along chroma: counts spread to the next luma
   // bin (by half), never across chroma, so a neutral and a reddish dark stay apart.

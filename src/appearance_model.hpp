@@ -35,6 +35,11 @@ class AppearanceModel {
   void learn(const ColorView& image, Point2i origin, const Mask& object, const Mask& surroundings,
              double rate);
 
+  // The same with the surroundings given as counts per colour bin (the colours of the frame's
+  // border, say), weighed as many pixels as the object has.
+  void learn(const ColorView& image, Point2i origin, const Mask& object,
+             const std::vector<std::uint32_t>& surroundings);
+
   // P(object | colour) of every pixel of `roi`, scaled to 0–255, into `out` (roi.width ×
   // roi.height, row stride roi.width): a colour seen mostly on the object scores high, one seen
   // mostly around it or never seen scores low.

@@ -20,6 +20,8 @@ class EdgeSource {
       : map_(&map), gray_(gray), params_(params) {}
   // The frame the edges are of (its size is the frame's).
   const ImageView& frame() const { return map_ ? gray_ : given_; }
+  // The parameters edges are detected with (defaults for given edges).
+  const EdgeParams& params() const { return params_; }
   // The edges of `region` (clipped to the frame), valid until the next call.
   ImageView region(const Rect& r);
   // The edges of a work frame (see WorkFrame), valid until the next call with the same `map`:

@@ -11,6 +11,30 @@ void Mask::reset(const Rect& r) {
   std::fill_n(data_.begin(), n, 0);
 }
 
+void Mask::crop() {
+  BoundsAccumulator bounds;
+  for (int y = 0; y < rect_.height; ++y) {
+    const std::uint8_t* r = row(y);
+    int first = -1, last = -1;
+    for (int x = 0; x < rect_.width; ++x) {
+      if (!r[x]) continue;
+      if (first < 0) first = x;
+      last = x;
+    }
+    if (first >= 0) bounds.add_run(first, last, y);
+  }
+  const Rect b = bounds.rect();
+  if (b.empty()) {
+    rect_ = {};
+    return;
+  }
+  // Rows move up and left in place: each destination precedes its source.
+  for (int y = 0; y < b.height; ++y)
+    std::copy_n(data_.data() + static_cast<std::size_t>(y + b.y) * rect_.width + b.x, b.width,
+                data_.data() + static_cast<std::size_t>(y) * b.width);
+  rect_ = {rect_.x + b.x, rect_.y + b.y, b.width, b.height};
+}
+
 MaskMoments moments(const Mask& m) {
   MaskMoments out;
   const Rect& r = m.rect();

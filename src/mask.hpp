@@ -27,6 +27,8 @@ class Mask {
   // Whether the frame pixel p is in the mask (false outside rect()).
   bool at(Point2i p) const { return rect_.contains(p) && row(p.y - rect_.y)[p.x - rect_.x] != 0; }
   ImageView view() const { return ImageView(data_.data(), rect_.width, rect_.height, rect_.width); }
+  // Shrinks rect() to the box of the set pixels (empty when there are none).
+  void crop();
   // Moves the mask by (dx, dy) in the frame, its pixels with it.
   void translate(int dx, int dy) {
     rect_.x += dx;

@@ -33,6 +33,9 @@ struct FinderParams {
 class ObjectFinder {
  public:
   int scale() const { return work_.scale(); }
+  // The colours of the frame's border strip on the last search from a seed or by motion:
+  // counts per AppearanceModel colour bin, at scale().
+  const std::vector<std::uint32_t>& border_colours() const { return border_counts_; }
   // The object around `seed`: the 4-connected region of colours not seen on the frame's border
   // (a held object is in the middle of the picture; the wall, the table and the arm that holds
   // it reach the border), the nearest one when the seed's own colour is seen there, its holes

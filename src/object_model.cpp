@@ -56,6 +56,38 @@ void ObjectModel::load(const ColorView& frame, const Rect& box, int margin, doub
                        bool learning, const ObjectModelParams& p) {
   const int ring = learning ? at_least(p.ring, area, 3) : 0;
   work_.build(frame, scale_, grown(box, std::max(margin, ring)));
+  score();
+}
+
+void ObjectModel::score() {
+  const Rect& roi = work_.rect();
+  appearance_.likelihood(work_.view(), {roi.x, roi.y}, roi, likelihood_);
+}
+
+void ObjectModel::recentre(Mask& prior, int window) {
+  // Mean shift on the likelihood, as CamShift does: the prior moves to the centre of the
+  // object-like pixels around it, a few times, so that an object faster than its predicted
+  // motion is not cut where the prior ends.
+  const Rect& roi = work_.rect();
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    const MaskMoments m = moments(prior);
+    const Rect w = grown(m.bbox, window) & roi;
+    double mass = 0, sx = 0, sy = 0;
+    for (int y = w.y; y < w.bottom(); ++y) {
+      const std::uint8_t* l =
+          likelihood_.data() + static_cast<std::size_t>(y - roi.y) * roi.width - roi.x;
+      for (int x = w.x; x < w.right(); ++x) {
+        if (l[x] < 128) continue;
+        mass += 1;
+        sx += x;
+        sy += y;
+      }
+    }
+    if (mass < 0.3 * m.area) return;  // too little of the object around: leave the prior be
+    const Point2i d = round_to_pixel({sx / mass - m.centroid.x, sy / mass - m.centroid.y});
+    if (d.x == 0 && d.y == 0) return;
+    prior.translate(d.x, d.y);
+  }
 }
 
 void ObjectModel::learn(const Mask& object, const Mask& silhouette, double ring, double rate) {
@@ -75,13 +107,13 @@ void ObjectModel::learn(const Mask& object, const Mask& silhouette, double ring,
 }
 
 bool ObjectModel::segment(EdgeSource& edges, const Mask& prior, double area, Point2i hint,
-                          int reach, const ObjectModelParams& p, Mask& out) {
+                          int reach, const ObjectModelParams& p, Mask& out, bool first) {
   const Rect& roi = work_.rect();
   const ImageView e = edges.work(work_, edge_map_, edge_buffer_);
-  appearance_.likelihood(work_.view(), {roi.x, roi.y}, roi, likelihood_);
   SilhouetteParams sp;
   sp.reach = reach;
   sp.small_region = p.small_region;
+  sp.all_pieces_in_reach = first;
   return segmenter_.segment(likelihood_, e, roi, prior, area, hint, sp, out) &&
          moments(out).area > 0;
 }
@@ -105,7 +137,8 @@ void ObjectModel::take_unknown_inside(Point2i seed, Mask& s) {
 }
 
 bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& first,
-                        int first_scale, Point2i seed_pixel, const ObjectModelParams& p,
+                        int first_scale, Point2i seed_pixel,
+                        const std::vector<std::uint32_t>& background, const ObjectModelParams& p,
                         Mask& out) {
   const double frame_area = moments(first).area * first_scale * first_scale;
   if (frame_area <= 0) return false;
@@ -115,7 +148,7 @@ bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& f
   if (m0.area <= 0) return false;
   Point2i seed = to_work(seed_pixel);
   if (!prior_.at(seed)) seed = ops_.deepest(prior_).first;
-  const int reach = at_least(2 * p.reach, m0.area, 2);
+  const int reach = at_least(p.start_reach, m0.area, 2);
   load(frame, m0.bbox, margin_for(m0, reach, p), m0.area, true, p);
   unlearned_ = 0;
   // The core: the disc around the seed, within the first silhouette.
@@ -130,17 +163,29 @@ bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& f
       if (dx * dx + dy * dy > 1LL * radius * radius) c[x] = 0;
     }
   }
-  learn(core_, prior_, p.ring, 1.0);
-  for (int round = 0; round < std::max(1, p.start_rounds); ++round) {
+  // Against the border's colours, not a ring: a ring could hold the object's own part beyond a
+  // finger across it.
+  appearance_.learn(work_.view(), {work_.rect().x, work_.rect().y}, core_, background);
+  score();
+  // Rounds of segmenting and learning, at least start_rounds, and on while the silhouette grows
+  // (the part of the object beyond a finger comes in a reach at a time), at most three times as
+  // many.
+  const int rounds = std::max(1, p.start_rounds);
+  for (int round = 0; round < 3 * rounds; ++round) {
     const MaskMoments m = moments(prior_);
-    if (!segment(edges, prior_, m.area, seed, at_least(2 * p.reach, m.area, 2), p, out)) {
+    const int reach = at_least(p.start_reach, m.area, 2);
+    if (round > 0) load(frame, m.bbox, margin_for(m, reach, p), m.area, true, p);
+    if (!segment(edges, prior_, m.area, seed, reach, p, out, true)) {
       silhouette_.reset({});
       return false;
     }
     if (round == 0) take_unknown_inside(seed, out);
     ops_.erode(out, 1, core_);
     learn(moments(core_).area > 0 ? core_ : out, out, p.ring, 1.0);
+    score();
+    const bool grew = moments(out).area > 1.02 * m.area;
     embed(out, out.rect(), prior_);
+    if (round + 1 >= rounds && !grew) break;
   }
   embed(out, out.rect(), silhouette_);
   return true;
@@ -169,23 +214,29 @@ bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion
   embed(silhouette_, silhouette_.rect(), prior_);
   const Point2i shift = round_to_pixel({motion.x / scale_, motion.y / scale_});
   prior_.translate(shift.x, shift.y);
-  const Rect box{m.bbox.x + shift.x, m.bbox.y + shift.y, m.bbox.width, m.bbox.height};
-  const int reach = at_least(p.reach, m.area, 2);
-  int margin = margin_for(m, reach, p);
+  const int reach = at_least(p.reach, m.area, 2), window = at_least(p.window, m.area, 2);
+  int margin = margin_for(m, reach, p) + window;
   const Rect frame_work = {0, 0, (frame.luma.width + scale_ - 1) / scale_,
                            (frame.luma.height + scale_ - 1) / scale_};
+  const bool learning = unlearned_ + 1 >= p.learn_every;
   for (int attempt = 0;; ++attempt) {
-    load(frame, box, margin, m.area, unlearned_ + 1 >= p.learn_every, p);
-    if (work_.rect().empty() ||
-        !segment(edges, prior_, m.area, hint.x >= 0 ? to_work(hint) : hint, reach, p, out))
+    // First around the predicted box, then in a region twice as wide, then the whole frame.
+    const MaskMoments pm = moments(prior_);
+    if (attempt < 2)
+      load(frame, pm.bbox, margin, m.area, learning, p);
+    else
+      load(frame, frame_work, 0, m.area, learning, p);
+    if (work_.rect().empty()) return false;
+    recentre(prior_, window);
+    if (!segment(edges, prior_, m.area, hint.x >= 0 ? to_work(hint) : hint, reach, p, out))
       return false;
     // A silhouette that reaches the region's border (where it is not the frame's) was cut by
-    // it: search once more in a region twice as wide.
+    // it: search again in a larger region.
     const Rect b = moments(out).bbox, roi = work_.rect();
     const bool cut = (b.x == roi.x && roi.x > 0) || (b.y == roi.y && roi.y > 0) ||
                      (b.right() == roi.right() && roi.right() < frame_work.width) ||
                      (b.bottom() == roi.bottom() && roi.bottom() < frame_work.height);
-    if (!cut || attempt == 1) return true;
+    if (!cut || attempt == 2) return true;
     margin *= 2;
   }
 }

@@ -27,6 +27,9 @@ struct ObjectModelParams {
   // take in part of the hand, the disc does not.
   double core = 0.3;
   int start_rounds = 3;  // rounds of segmenting and learning on the first frame
+  // On the first frame the silhouette may reach this share of √area beyond the first one: across
+  // a finger to the object's part on its other side.
+  double start_reach = 0.25;
   // How fast the colours follow the object's: the share of one frame in the model. The model
   // learns every `learn_every` frames (at the rate of as many frames), which costs less.
   double learning_rate = 0.05;
@@ -35,8 +38,11 @@ struct ObjectModelParams {
   // by the object's motion; the region searched is its box grown by `margin` of its larger side.
   double reach = 0.08;
   double margin = 0.15;
+  // Before segmenting, the prior is moved to the object-like pixels within this share of √area
+  // of it (mean shift): an object faster than its predicted motion.
+  double window = 0.25;
   // Edge-bounded regions under this share of the expected area are taken or left whole.
-  double small_region = 0.25;
+  double small_region = 1.25;
 };
 
 class ObjectModel {
@@ -53,11 +59,13 @@ class ObjectModel {
   const AppearanceModel& appearance() const { return appearance_; }
 
   // Starts from a first silhouette `first` (work coordinates at `first_scale`) found around
-  // `seed` (a frame pixel): learns the colours of its core against its surroundings, then
-  // segments and learns again on this frame. Holds the result as the silhouette and puts it in
-  // `out`; false when nothing is left of the object.
+  // `seed` (a frame pixel): learns the colours of its core against the colours of the frame's
+  // border (`background`, counts per colour bin), then segments and learns again on this frame
+  // against a ring around it. Holds the result as the silhouette and puts it in `out`; false when
+  // nothing is left of the object.
   bool start(const ColorView& frame, EdgeSource& edges, const Mask& first, int first_scale,
-             Point2i seed, const ObjectModelParams& p, Mask& out);
+             Point2i seed, const std::vector<std::uint32_t>& background, const ObjectModelParams& p,
+             Mask& out);
   // Resumes an object found again by its colours around `first`: segments with the colours it
   // knows (learning nothing until accept()) and holds the result as the silhouette.
   bool resume(const ColorView& frame, EdgeSource& edges, const Mask& first, int first_scale,
@@ -75,11 +83,16 @@ class ObjectModel {
   // the model learns on this frame.
   void load(const ColorView& frame, const Rect& box, int margin, double area, bool learning,
             const ObjectModelParams& p);
+  // The likelihood of the loaded work frame, into likelihood_ (load() does it).
+  void score();
+  // Moves `prior` onto the object-like pixels within `window` work px of its box.
+  void recentre(Mask& prior, int window);
   // Learns the colours of `object` against a ring around the convex hull of `silhouette` (on this
   // frame's work frame).
   void learn(const Mask& object, const Mask& silhouette, double ring, double rate);
+  // `first`: a first silhouette, which keeps every object-like piece within reach of the prior.
   bool segment(EdgeSource& edges, const Mask& prior, double area, Point2i hint, int reach,
-               const ObjectModelParams& p, Mask& out);
+               const ObjectModelParams& p, Mask& out, bool first = false);
   // Adds to `s` the pixels inside its convex hull whose colours are not the surroundings'.
   void take_unknown_inside(Point2i seed, Mask& s);
   Point2i to_work(Point2i frame_pixel) const;

@@ -8,38 +8,56 @@ bool SilhouetteSegmenter::segment(const std::vector<std::uint8_t>& likelihood,
                                   const ImageView& edges, const Rect& roi, const Mask& prior,
                                   double expected_area, Point2i hint, const SilhouetteParams& p,
                                   Mask& out) {
-  out.reset(roi);
   if (roi.empty() || edges.width != roi.width || edges.height != roi.height ||
-      likelihood.size() < static_cast<std::size_t>(roi.width) * roi.height)
+      likelihood.size() < static_cast<std::size_t>(roi.width) * roi.height) {
+    out.reset({});
     return false;
-  const int w = roi.width, h = roi.height;
+  }
+  // Only within reach of the prior can the object be: the work is done there alone.
+  const Rect a = Rect{prior.rect().x - p.reach, prior.rect().y - p.reach,
+                      prior.rect().width + 2 * p.reach, prior.rect().height + 2 * p.reach} &
+                 roi;
+  out.reset(a);
+  if (a.empty()) return false;
+  const int w = a.width, h = a.height;
+  const ImageView area_edges(edges.row(a.y - roi.y) + (a.x - roi.x), w, h, edges.stride);
+  const auto like_row = [&](int y) {
+    return likelihood.data() + static_cast<std::size_t>(y + a.y - roi.y) * roi.width +
+           (a.x - roi.x);
+  };
 
-  // Where the object may be: the prior, moved onto the region, grown by the reach.
-  prior_.reset(roi);
-  const Rect common = prior.rect() & roi;
+  // Where the object may be: the prior, grown by the reach.
+  prior_.reset(a);
+  const Rect common = prior.rect() & a;
   for (int y = common.y; y < common.bottom(); ++y)
     std::copy_n(prior.row(y - prior.rect().y) + (common.x - prior.rect().x), common.width,
-                prior_.row(y - roi.y) + (common.x - roi.x));
+                prior_.row(y - a.y) + (common.x - a.x));
   ops_.dilate(prior_, p.reach, near_);
 
   // Each edge-bounded region's mean likelihood.
-  regions_.label(edges, true);
+  regions_.label(area_edges, true);
   sums_.assign(static_cast<std::size_t>(regions_.count()) + 1, 0);
   for (int y = 0; y < h; ++y) {
     const std::int32_t* l = regions_.row(y);
-    const std::uint8_t* like = likelihood.data() + static_cast<std::size_t>(y) * w;
+    const std::uint8_t* like = like_row(y);
     for (int x = 0; x < w; ++x) sums_[l[x]] += like[x];
   }
+  // A region cut by the work area's border may be far larger than what is seen of it (the wall,
+  // the arm): it is decided pixel by pixel, as a large one.
+  cut_.assign(sums_.size(), 0);
+  for (int x = 0; x < w; ++x) cut_[regions_.row(0)[x]] = cut_[regions_.row(h - 1)[x]] = 1;
+  for (int y = 0; y < h; ++y) cut_[regions_.row(y)[0]] = cut_[regions_.row(y)[w - 1]] = 1;
   const double small = p.small_region * expected_area;
   for (int y = 0; y < h; ++y) {
     const std::int32_t* l = regions_.row(y);
-    const std::uint8_t* like = likelihood.data() + static_cast<std::size_t>(y) * w;
+    const std::uint8_t* like = like_row(y);
     const std::uint8_t* n = near_.row(y);
     std::uint8_t* o = out.row(y);
     for (int x = 0; x < w; ++x) {
       if (!l[x] || !n[x]) continue;
       const std::int32_t size = regions_.size(l[x]);
-      o[x] = size < small ? sums_[l[x]] >= 128u * static_cast<std::uint32_t>(size) : like[x] >= 128;
+      o[x] = size < small && !cut_[l[x]] ? sums_[l[x]] >= 128u * static_cast<std::uint32_t>(size)
+                                         : like[x] >= 128;
     }
   }
   // An edge pixel between two object pixels (across it, either way) belongs to the object.
@@ -68,13 +86,14 @@ bool SilhouetteSegmenter::segment(const std::vector<std::uint8_t>& likelihood,
     const std::uint8_t* pr = prior_.row(y);
     for (int x = 0; x < w; ++x) overlap_[c[x]] += pr[x];
   }
-  const int hinted = roi.contains(hint) ? components_.row(hint.y - roi.y)[hint.x - roi.x] : 0;
+  const int hinted = a.contains(hint) ? components_.row(hint.y - a.y)[hint.x - a.x] : 0;
   keep_.assign(overlap_.size(), 0);
   int best = 0;
   std::int64_t best_score = -1;
   for (int c = 1; c <= components_.count(); ++c) {
     const double size = components_.size(c);
-    keep_[c] = c == hinted || (2 * overlap_[c] >= size && size >= p.min_piece * expected_area);
+    keep_[c] = c == hinted || ((p.all_pieces_in_reach || 2 * overlap_[c] >= size) &&
+                               size >= p.min_piece * expected_area);
     const std::int64_t score = overlap_[c] * (std::int64_t{1} << 32) + components_.size(c);
     if (score > best_score) best_score = score, best = c;
   }
@@ -85,7 +104,8 @@ bool SilhouetteSegmenter::segment(const std::vector<std::uint8_t>& likelihood,
     for (int x = 0; x < w; ++x) o[x] = keep_[c[x]];
   }
   ops_.fill_holes(out);
-  return true;
+  out.crop();
+  return !out.empty();
 }
 
 }  // namespace projtrack

@@ -21,10 +21,13 @@ struct SilhouetteParams {
   // Edge-bounded regions smaller than this share of the expected area are taken or left whole,
   // by their mean likelihood (a print, a highlight, a finger); larger ones, which may have leaked
   // through a gap in the edges, pixel by pixel.
-  double small_region = 0.25;
+  double small_region = 1.25;
   // A piece of the object apart from the rest (a finger cuts across it) must hold at least this
   // share of the expected area.
   double min_piece = 0.03;
+  // Keep every such piece within reach of the prior, not only those that lie mostly on it: for a
+  // first silhouette, which may hold only the part of the object on one side of a finger.
+  bool all_pieces_in_reach = false;
 };
 
 class SilhouetteSegmenter {
@@ -42,7 +45,7 @@ class SilhouetteSegmenter {
   RegionLabels regions_, components_;
   std::vector<std::uint32_t> sums_;
   std::vector<std::int64_t> overlap_;
-  std::vector<std::uint8_t> keep_;
+  std::vector<std::uint8_t> keep_, cut_;
   Mask prior_, near_;
   MaskOps ops_;
 };

@@ -6,6 +6,7 @@ namespace projtrack {
 
 int SilhouettePieces::split(const Mask& s, int neck, double min_share) {
   rect_ = s.rect();
+  silhouette_ = &s;
   const int w = rect_.width, h = rect_.height;
   order_.clear();
   owner_.assign(static_cast<std::size_t>(w) * h, 0);
@@ -36,6 +37,34 @@ int SilhouettePieces::split(const Mask& s, int neck, double min_share) {
     return 1;
   }
   // Grown back breadth first over the silhouette: each pixel goes to the nearest core.
+  grow();
+  // A part of the silhouette with no core (thinner than the neck everywhere) and big enough is a
+  // piece of its own.
+  leftover_.reset(rect_);
+  bool any = false;
+  for (int y = 0; y < h; ++y) {
+    const std::int32_t* o = owner_.data() + static_cast<std::size_t>(y) * w;
+    std::uint8_t* d = leftover_.row(y);
+    for (int x = 0; x < w; ++x) any |= (d[x] = s.row(y)[x] && !o[x]) != 0;
+  }
+  if (!any) return static_cast<int>(order_.size());
+  rest_.label(leftover_.view(), false);
+  for (int l = 1; l <= rest_.count(); ++l) {
+    if (rest_.size(l) < min_share * area) continue;
+    const int index = static_cast<int>(order_.size());
+    order_.push_back(-l);  // a leftover: its own pixels are its core
+    for (int y = 0; y < h; ++y) {
+      const std::int32_t* c = rest_.row(y);
+      for (int x = 0; x < w; ++x)
+        if (c[x] == l) owner_[static_cast<std::size_t>(y) * w + x] = index + 1;
+    }
+  }
+  return static_cast<int>(order_.size());
+}
+
+void SilhouettePieces::grow() {
+  const Mask& s = *silhouette_;
+  const int w = rect_.width, h = rect_.height;
   for (std::size_t head = 0; head < queue_.size(); ++head) {
     const Point2i p = queue_[head];
     const std::int32_t o = owner_[static_cast<std::size_t>(p.y) * w + p.x];
@@ -48,7 +77,6 @@ int SilhouettePieces::split(const Mask& s, int neck, double min_share) {
       queue_.push_back(q);
     }
   }
-  return static_cast<int>(order_.size());
 }
 
 int SilhouettePieces::whole(const Mask& s) {
@@ -76,7 +104,7 @@ const Mask& SilhouettePieces::piece(int i) {
 }
 
 Point2i SilhouettePieces::deepest(int i) {
-  if (order_.size() == 1 && order_[0] == 0) return ops_.deepest(piece(0)).first;
+  if (order_[i] <= 0) return ops_.deepest(piece(i)).first;  // the whole, or a leftover
   core_.reset(rect_);
   for (int y = 0; y < rect_.height; ++y) {
     const std::int32_t* l = cores_.row(y);

@@ -27,8 +27,12 @@ class SilhouettePieces {
   int piece_at(Point2i p) const;
 
  private:
-  Mask opened_, core_, piece_, tmp_;
-  RegionLabels cores_;
+  // Grows the cores' owners over the silhouette, breadth first.
+  void grow();
+
+  const Mask* silhouette_ = nullptr;
+  Mask opened_, core_, piece_, tmp_, leftover_;
+  RegionLabels cores_, rest_;
   std::vector<int> order_, label_of_;  // pieces by size; core label → piece index
   std::vector<std::int32_t> owner_;    // per pixel of s: piece index + 1, 0 = none
   std::vector<Point2i> queue_;

@@ -119,11 +119,14 @@ TrackResult Tracker::track(const ColorView& frame, EdgeSource& edges, double t, 
     r.detail = "no usable frame";
     return r;
   }
-  if (tp.model != model_) {  // another model: the same object, found again its own way
+  // An edge map given as the frame (EdgeDetector::Input) shows no appearance: the edges model.
+  const ObjectModelKind model =
+      edges.params().detector == EdgeDetector::Input ? ObjectModelKind::Edges : tp.model;
+  if (model != model_) {  // another model: the same object, found again its own way
     const std::optional<Point2i> inner = inner_;
     reset();
     inner_ = inner;
-    model_ = tp.model;
+    model_ = model;
   }
   return model_ == ObjectModelKind::Edges ? track_edges(frame, edges, t, m, params, tp, trace)
                                           : track_appearance(frame, edges, t, m, params, tp, trace);
@@ -177,6 +180,10 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
   resumed = false;
   if (inner_) {
     seed = *inner_;
+    if (!Rect{0, 0, w, h}.contains(seed)) {
+      why = "the inner point lies outside the frame";
+      return false;
+    }
     found = finder_.from_seed(frame, seed, tp.finder, first_, why);
   } else if (tp.acquisition == Acquisition::Center) {
     found = finder_.from_seed(frame, seed, tp.finder, first_, why);
@@ -210,7 +217,8 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
   const int scale = finder_.scale();
   const bool ok = resumed
                       ? object_.resume(frame, edges, first_, scale, seed, tp.object, silhouette_)
-                      : object_.start(frame, edges, first_, scale, seed, tp.object, silhouette_);
+                      : object_.start(frame, edges, first_, scale, seed, finder_.border_colours(),
+                                      tp.object, silhouette_);
   if (!ok) why = "nothing of the object's colours is left around it";
   return ok;
 }
@@ -291,7 +299,10 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
     box.add(f.bbox);
     reach.add(f.reach);
   }
-  if (n == 1 && total.valid() && !split_ && total.area < 0.8 * moments(silhouette_).area * s * s) {
+  // (A fill that covers much less than the silhouette was kept out of part of it; rays always
+  // see less of a shape that is not star-shaped around the inner point, and are left so.)
+  if (n == 1 && total.valid() && !split_ && method_info(m).family == Family::Fill &&
+      total.area < 0.8 * moments(silhouette_).area * s * s) {
     split_ = true;  // once more, in pieces
     total = estimate_on_silhouette(m, params, width, height, trace);
     split_ = false;

@@ -1,4 +1,5 @@
-// The tracker, frame by frame: acquisition, the inner point, refusals, the pose.
+// The tracker with the edges model (the paper's tracker), frame by frame: acquisition, the inner
+// point, refusals, the pose. The appearance model has its own tests (test_object_model.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,8 +30,15 @@ Frame disc_frame(int cx, int cy, int r, int w = 320, int h = 240) {
   return f;
 }
 
-TrackerParams manual() {
+// The paper's tracker: the estimator on the edges alone.
+TrackerParams edges_model() {
   TrackerParams tp;
+  tp.model = ObjectModelKind::Edges;
+  return tp;
+}
+
+TrackerParams manual() {
+  TrackerParams tp = edges_model();
   tp.acquisition = Acquisition::Manual;
   return tp;
 }
@@ -167,7 +175,7 @@ TEST(Tracker, AUserSeedOnTheBackgroundIsRefused) {
 }
 
 TEST(Tracker, CenterAcquisitionTakesWhatIsAtTheCentre) {
-  TrackerParams tp;
+  TrackerParams tp = edges_model();
   tp.acquisition = Acquisition::Center;
   Tracker t;
   const Frame off = disc_frame(60, 60, 30);
@@ -182,7 +190,7 @@ TEST(Tracker, CenterAcquisitionTakesWhatIsAtTheCentre) {
 TEST(Tracker, AutoAcquisitionFindsTheMovingObject) {
   for (AutoAcquisition strategy :
        {AutoAcquisition::MotionCentroid, AutoAcquisition::CompactMovingRegion}) {
-    TrackerParams tp;
+    TrackerParams tp = edges_model();
     tp.strategy = strategy;
     Tracker t;
     const Frame a = disc_frame(100, 120, 35), b = disc_frame(112, 120, 35);
@@ -211,7 +219,7 @@ TEST(Tracker, AutoAcquisitionIgnoresSlivers) {
   Tracker t;
   for (int i = 0; i < 4; ++i) {
     const Frame f = bar(100 + 6 * i);
-    EXPECT_EQ(t.track(f.g(), f.e(), i / 30.0, Method::PixelFilling, {}, TrackerParams{}).status,
+    EXPECT_EQ(t.track(f.g(), f.e(), i / 30.0, Method::PixelFilling, {}, edges_model()).status,
               Status::Searching)
         << i;
   }

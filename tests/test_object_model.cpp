@@ -1,0 +1,247 @@
+// The tracker with the appearance model on drawn colour frames that hold what real footage does:
+// a held object with a print on it, the arm that holds it reaching the frame's border, a finger
+// across it, noise, a static textured background, an object that leaves and comes back.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "tracker.hpp"
+
+namespace projtrack {
+namespace {
+
+struct Scene {
+  int width = 320, height = 240;
+  Point2d centre{160, 120};
+  double radius = 40;
+  bool arm = true;      // a skin-coloured arm from the right border onto the object
+  bool finger = false;  // a skin-coloured bar right across the object
+  bool textured = false;
+  int seed = 1;
+};
+
+// The frame as I420, and the true silhouette: the dark blue disc with its light print, minus
+// what the arm and the finger cover.
+struct Frame {
+  cv::Mat i420;
+  cv::Mat truth;  // CV_8U, 1 on the object's visible pixels
+  double area = 0;
+  Point2d centroid;
+  ColorView view() const {
+    const int w = truth.cols, h = truth.rows;
+    ColorView c;
+    c.luma = ImageView(i420.data, w, h, w);
+    c.chroma = {i420.data + w * h, i420.data + w * h + (w / 2) * (h / 2), w / 2, 1, 1, 1};
+    return c;
+  }
+};
+
+Frame render(const Scene& s) {
+  cv::Mat bgr(s.height, s.width, CV_8UC3, cv::Scalar(205, 210, 215));  // a light wall
+  std::mt19937 rng(static_cast<unsigned>(s.seed));
+  if (s.textured) {  // a static background of coloured blocks (the same every frame)
+    std::mt19937 fixed(99);
+    for (int y = 0; y < s.height; y += 16)
+      for (int x = 0; x < s.width; x += 16)
+        cv::rectangle(bgr, cv::Rect(x, y, 16, 16),
+                      cv::Scalar(100 + fixed() % 120, 100 + fixed() % 120, 100 + fixed() % 120),
+                      cv::FILLED);
+  }
+  cv::Mat object(s.height, s.width, CV_8U, cv::Scalar(0));
+  const cv::Point c(static_cast<int>(std::lround(s.centre.x)),
+                    static_cast<int>(std::lround(s.centre.y)));
+  const int r = static_cast<int>(std::lround(s.radius));
+  cv::circle(object, c, r, cv::Scalar(1), cv::FILLED);
+  cv::circle(bgr, c, r, cv::Scalar(120, 40, 20), cv::FILLED);  // dark blue
+  // A print, clear of the finger.
+  cv::circle(bgr, c + cv::Point(r / 3, -r / 2), r / 4, cv::Scalar(200, 150, 90), cv::FILLED);
+  cv::Mat cover(s.height, s.width, CV_8U, cv::Scalar(0));
+  const cv::Scalar skin(120, 160, 215);
+  if (s.arm) {
+    const cv::Rect arm(c.x + r / 2, c.y - r / 6, s.width, r / 3);
+    cv::rectangle(bgr, arm, skin, cv::FILLED);
+    cv::rectangle(cover, arm, cv::Scalar(1), cv::FILLED);
+  }
+  if (s.finger) {
+    const cv::Rect finger(c.x - r - 10, c.y - 4, 2 * r + 20, 8);
+    cv::rectangle(bgr, finger, skin, cv::FILLED);
+    cv::rectangle(cover, finger, cv::Scalar(1), cv::FILLED);
+  }
+  cv::Mat noise(bgr.size(), CV_16SC3);
+  cv::randn(noise, 0, 4);
+  cv::theRNG().state = rng();
+  bgr.convertTo(bgr, CV_16SC3);
+  bgr += noise;
+  bgr.convertTo(bgr, CV_8UC3);
+  Frame f;
+  cv::cvtColor(bgr, f.i420, cv::COLOR_BGR2YUV_I420);
+  f.truth = object & (cover == 0);
+  const cv::Moments m = cv::moments(f.truth, true);
+  f.area = m.m00;
+  f.centroid = {m.m10 / m.m00, m.m01 / m.m00};
+  return f;
+}
+
+void expect_close(const TrackResult& r, const Frame& f, double centroid_px, double area_share,
+                  const std::string& what) {
+  ASSERT_TRUE(has_features(r.status)) << what << ": " << status_name(r.status) << " " << r.detail;
+  EXPECT_LT(distance(r.features.centroid, f.centroid), centroid_px) << what;
+  EXPECT_NEAR(r.features.area / f.area, 1.0, area_share) << what;
+}
+
+TEST(ObjectModel, SeededTheWholeObjectWithoutTheArmAndWithItsPrint) {
+  const Frame f = render({});
+  Tracker t;
+  t.seed({160, 120});
+  const TrackResult r = t.track(f.view(), EdgeParams{}, 0, Method::GapTolerantFilling, {}, {});
+  EXPECT_TRUE(r.acquired);
+  expect_close(r, f, 3, 0.1, "first frame");
+}
+
+TEST(ObjectModel, FollowsAMovingObjectWithEveryMethod) {
+  for (Method m : kAllMethods) {
+    Tracker t;
+    t.seed({100, 120});
+    for (int i = 0; i < 20; ++i) {
+      Scene s;
+      s.centre = {100 + 6.0 * i, 120 + 2.0 * std::sin(i / 3.0)};
+      s.seed = i;
+      const Frame f = render(s);
+      const TrackResult r = t.track(f.view(), EdgeParams{}, i / 30.0, m, {}, {});
+      // Ray methods see the disc from one inner point: the print and the arm's notch bend it.
+      const bool rays = method_info(m).family == Family::Rays;
+      expect_close(r, f, rays ? 8 : 3, rays ? 0.35 : 0.1,
+                   std::string(method_name(m)) + " frame " + std::to_string(i));
+    }
+  }
+}
+
+TEST(ObjectModel, AFingerAcrossTheObjectLeavesTwoPiecesBothCounted) {
+  Scene s;
+  s.finger = true;
+  const Frame f = render(s);
+  Tracker t;
+  t.seed({160, 100});
+  TrackResult r;
+  for (int i = 0; i < 3; ++i)
+    r = t.track(f.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, {});
+  expect_close(r, f, 3, 0.1, "across a finger");
+}
+
+TEST(ObjectModel, NoSeedTheMovingObjectAndNeverTheStaticBackground) {
+  Tracker t;
+  Scene s;
+  s.textured = true;
+  s.arm = false;
+  // Nothing moves: the textured background is never taken for an object.
+  for (int i = 0; i < 5; ++i) {
+    s.seed = i;
+    const Frame still = render(s);
+    EXPECT_EQ(
+        t.track(still.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, {}).status,
+        Status::Searching)
+        << i;
+  }
+  // The object moves: it is found.
+  bool found = false;
+  for (int i = 5; i < 15 && !found; ++i) {
+    s.centre.x = 160 + 5.0 * (i - 4);
+    s.seed = i;
+    const Frame f = render(s);
+    const TrackResult r =
+        t.track(f.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, {});
+    if (!has_features(r.status)) continue;
+    found = true;
+    expect_close(r, f, 4, 0.15, "found by motion");
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(ObjectModel, FoundAgainByItsColoursWithDepthGoingOn) {
+  Tracker t;
+  t.seed({160, 120});
+  Scene s;
+  TrackerParams tp;
+  tp.smoothing = false;
+  for (int i = 0; i < 5; ++i) {
+    s.seed = i;
+    t.track(render(s).view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp);
+  }
+  // The object leaves: lost, then searched for.
+  Scene empty = s;
+  empty.radius = 0;
+  empty.arm = false;
+  Status last = Status::Ok;
+  for (int i = 5; i < 15; ++i) {
+    empty.seed = i;
+    last = t.track(render(empty).view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp)
+               .status;
+  }
+  EXPECT_EQ(last, Status::Searching);
+  // It comes back elsewhere, nearer the camera (larger), moving.
+  TrackResult r;
+  bool acquired = false;
+  Frame f;
+  for (int i = 15; i < 25; ++i) {
+    Scene back = s;
+    back.centre = {110 + 4.0 * (i - 15), 130};
+    back.radius = 48;
+    back.seed = i;
+    f = render(back);
+    r = t.track(f.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp);
+    acquired |= r.acquired;
+  }
+  EXPECT_TRUE(acquired);
+  expect_close(r, f, 3, 0.1, "found again");
+  // Depth goes on from the first acquisition: sqrt(area now / area then), not 1.
+  EXPECT_GT(r.raw_pose.depth, 1.1);
+}
+
+TEST(ObjectModel, TheSameAnswerAtAnyWorkScale) {
+  Scene s;
+  s.width = 640;
+  s.height = 480;
+  s.centre = {320, 240};
+  s.radius = 90;
+  const Frame f = render(s);
+  TrackerParams fine, coarse;
+  fine.object.work_pixels = 1e9;  // scale 1
+  coarse.object.work_pixels = 2000;
+  TrackResult a, b;
+  Tracker ta, tb;
+  ta.seed({300, 240});
+  tb.seed({300, 240});
+  for (int i = 0; i < 3; ++i) {
+    a = ta.track(f.view(), EdgeParams{}, i / 30.0, Method::PixelFilling, {}, fine);
+    b = tb.track(f.view(), EdgeParams{}, i / 30.0, Method::PixelFilling, {}, coarse);
+  }
+  expect_close(a, f, 2, 0.05, "scale 1");
+  expect_close(b, f, 3, 0.08, "coarse scale");
+}
+
+TEST(ObjectModel, GrayFramesTrackByBrightness) {
+  const Frame f = render({});
+  ColorView gray = f.view();
+  gray.chroma = {};
+  Tracker t;
+  t.seed({160, 120});
+  const TrackResult r = t.track(gray, EdgeParams{}, 0, Method::GapTolerantFilling, {}, {});
+  ASSERT_TRUE(has_features(r.status)) << r.detail;
+  // Without chroma the print and the arm are told from the object by brightness alone.
+  EXPECT_LT(distance(r.features.centroid, f.centroid), 10);
+}
+
+TEST(ObjectModel, ASeedOutsideTheFrameSaysSo) {
+  const Frame f = render({});
+  Tracker t;
+  t.seed({5000, 10});
+  const TrackResult r = t.track(f.view(), EdgeParams{}, 0, Method::GapTolerantFilling, {}, {});
+  EXPECT_EQ(r.status, Status::Lost);
+  EXPECT_NE(r.detail.find("outside"), std::string::npos) << r.detail;
+  EXPECT_FALSE(r.features.valid());
+}
+
+}  // namespace
+}  // namespace projtrack
