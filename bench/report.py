@@ -570,9 +570,10 @@ class Report:
             return
         w = self.w
         specks = {r['spurious'] for r in rows}
+        resolutions = [res for res in self.resolutions if select(rows, resolution=res)]
         w(f'**max_gap at {pct(top, 0)} gaps**: gap-tolerant filling from the element\'s defaults '
           'at every max gap the sweep tries, on the runs\' scenes with that many gaps and the '
-          f'same inner points ({", ".join(sorted({r["resolution"] for r in rows}))}; '
+          f'same inner points ({", ".join(resolutions)}; '
           + ('with and without specks' if len(specks) > 1 else
              'with specks' if 1.0 in specks else 'no specks') + ').')
         w()
@@ -800,10 +801,11 @@ class Report:
         w('Median time of one estimate (edges given), one thread, on closed contours (no gaps, no '
           'specks, runs that did not leak), where every method does its normal work; beside it '
           'the median of the runs that leaked (a leaked fill walks the whole frame). The '
-          'whole-frame edge detection and a frame copy are given for scale: Canny over the whole '
-          'frame costs more than one estimate of '
-          + ('every contender' if not costlier else 'every contender but ' + ', '.join(costlier))
-          + ' at every resolution'
+          'whole-frame edge detection and a frame copy are given for scale: one estimate costs '
+          'less than Canny over the whole frame at every resolution for '
+          + ('every contender' if not costlier else
+             'every contender but ' + ', '.join(costlier[:-1])
+             + (' and ' if len(costlier) > 1 else '') + costlier[-1])
           + (f' ({MISSING} for {", ".join(unknown)})' if unknown else '') + '.')
         w()
         self.time_table()

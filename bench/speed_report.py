@@ -231,8 +231,8 @@ def targets(rows, meta, default, methods):
                    f"and the element's resident memory grows by less than {T5_FLAT_KIB} KiB "
                    "over the long run. Not judged: the element's own per-frame allocations, "
                    "which are GStreamer's message and ROI meta (see below)",
-                f"library: {MISSING if lib_max is None else f'{lib_max:g}'} per frame (the "
-                f"largest count of any method); element resident memory "
+                f"library: {MISSING if lib_max is None else f'{lib_max:g}'} allocations per "
+                f"frame (the most any method made); element resident memory "
                 + (MISSING if grew is None else
                    f"{'+' if grew >= 0 else ''}{grew:.0f} KiB from frame {mark:.0f} to "
                    f"{frames:.0f}")
@@ -426,8 +426,10 @@ def main():
     mark = value(rows, "memory", "generated", "1920x1080", "projtrack element", "mark_frames")
     frames = value(rows, "memory", "generated", "1920x1080", "projtrack element", "frames")
     if not missing(rss0, rss1, mark, frames):
-        md.append(f"Resident memory of the whole process with the element: {rss0 / 1024:.1f} MiB "
-                  f"after {mark:.0f} frames, {rss1 / 1024:.1f} MiB after {frames:.0f} (1080p).\n")
+        md.append("Resident memory of the whole benchmark process (the decoded clips it holds "
+                  f"included) while the element runs: {rss0 / 1024:.1f} MiB after {mark:.0f} "
+                  f"frames, {rss1 / 1024:.1f} MiB after {frames:.0f} (1080p). What matters is "
+                  "the difference: the element's own memory does not grow.\n")
 
     s8, s1 = streams(rows, T6_STREAMS), streams(rows, 1)
     cores = value(rows, "streams", "generated", "640x480", "cores", "count")
