@@ -4,9 +4,11 @@
     count_results.py LOGDIR [LOGDIR ...] [--extra NAME=EXITCODE ...]
 
 GoogleTest executables count each test case (from the JUnit log); any other meson test counts
-once. A test executable that failed without a failing case (a crash, a timeout) counts one failure.
-A log directory without results counts one failure (the build or the run did not happen). Each
---extra counts one test: passed when its exit code is 0.
+once. A test executable that failed without a failing case counts one failure. One that did not run
+to its end (a timeout, or killed by a signal) counts one failure and none of its cases: it wrote no
+XML of its own, so any cases meson found are an earlier run's. A log directory without results
+counts one failure (the build or the run did not happen). Each --extra counts one test: passed
+when its exit code is 0.
 """
 import json
 import sys
@@ -22,11 +24,14 @@ def count(logs):
         print(f'no test results in {logs} ({e})', file=sys.stderr)
         return 0, 1, 0
     cases = {}  # meson test name -> [passed, failed, skipped] from its GoogleTest cases
+    names = {run['name'] for run in runs}
     for suite in suites:
-        parts = suite.get('name', '').split('.')
-        if len(parts) < 3:
+        # meson names a GoogleTest suite '<project>.<test name>.<GoogleTest suite>'.
+        name = suite.get('name', '')
+        test = next((t for t in names if name.startswith(f'{t.split(":")[0]}.{t}.')), None)
+        if test is None:
             continue  # meson's own per-test suite, counted from testlog.json below
-        c = cases.setdefault(parts[1], [0, 0, 0])
+        c = cases.setdefault(test, [0, 0, 0])
         for case in suite.iter('testcase'):
             if case.find('failure') is not None or case.find('error') is not None:
                 c[1] += 1
@@ -38,7 +43,8 @@ def count(logs):
     for run in runs:
         ok = run['result'] in ('OK', 'EXPECTEDFAIL')
         skip = run['result'] == 'SKIP'
-        if run['name'] in cases:
+        unfinished = run['result'] == 'TIMEOUT' or (run.get('returncode') or 0) < 0
+        if run['name'] in cases and not unfinished:
             p, f, s = cases[run['name']]
             passed, failed, skipped = passed + p, failed + f, skipped + s
             if not ok and not skip and f == 0:

@@ -37,6 +37,8 @@ namespace projtrack::bench {
 namespace {
 
 using synthetic::frame_at;
+using synthetic::kSaneArea;
+using synthetic::kSaneCentroid;
 using synthetic::make_scene;
 using synthetic::Object;
 using synthetic::object_name;
@@ -44,11 +46,19 @@ using synthetic::Part;
 using synthetic::run_sequence;
 using synthetic::sample_seeds;
 using synthetic::Scene;
+using synthetic::SceneModel;
 using synthetic::SceneSpec;
 using synthetic::Seed;
 using synthetic::truth_is_consistent;
 
 constexpr double kLeakFactor = 1.5;  // an estimate above 1.5× the true area leaked
+// The max gaps the sweep tries, and that the runs at the highest gap rate compare (variants.csv).
+const std::vector<double> kMaxGapValues = {2, 4, 6, 8, 12, 15};
+// Auto acquisition's strategies, by the names the report uses.
+const std::pair<const char*, AutoAcquisition> kStrategies[] = {
+    {"motion-centroid", AutoAcquisition::MotionCentroid},
+    {"compact-moving-region", AutoAcquisition::CompactMovingRegion}};
+constexpr int kAcquisitionFrames = 30;
 
 struct Options {
   bool quick = false;
@@ -215,7 +225,7 @@ int sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progres
        {Method::GapTolerantFilling},
        [](Params& p, double v) { p.grid_size = int(v); }},
       {"max_gap",
-       {2, 4, 6, 8, 12, 15},
+       kMaxGapValues,
        {Method::GapTolerantFilling},
        [](Params& p, double v) { p.max_gap = int(v); }},
       {"block_size",
@@ -302,12 +312,10 @@ void acquisition(const Options& opt, std::ostream& csv, Progress& progress) {
          return s;
        }},
   };
-  const int instances = opt.quick ? 1 : 4, frames = 30;
+  const int instances = opt.quick ? 1 : 4, frames = kAcquisitionFrames;
   for (const Sequence& seq : sequences) {
     for (int k = 0; k < instances; ++k) {
-      for (auto [name, strategy] :
-           {std::pair{"motion-centroid", AutoAcquisition::MotionCentroid},
-            std::pair{"compact-moving-region", AutoAcquisition::CompactMovingRegion}}) {
+      for (auto [name, strategy] : kStrategies) {
         TrackerParams tp;
         tp.strategy = strategy;
         const auto steps = run_sequence(
@@ -324,6 +332,31 @@ void acquisition(const Options& opt, std::ostream& csv, Progress& progress) {
       }
     }
     progress.advance("acquisition " + seq.name);
+  }
+}
+
+// What the main runs leave open, on the same scenes and inner points: grid-filling at the element's
+// grid size on the gap scenes (the runs use the paper's), and gap-tolerant filling at every max gap
+// the sweep tries on the scenes with the most gaps (the sweep stops short of them), from the
+// element's defaults. One timing each: these rows are read for leaks and errors, not times.
+void run_variants(const Scene& s, const std::vector<Seed>& seeds, double highest_gap_rate,
+                  const Params& paper, const Params& defaults, std::ostream& csv) {
+  const auto run_with = [&](Method m, const Params& p, const char* parameter, double value,
+                            const char* base) {
+    Contender c = estimator_contender(m);
+    std::ostringstream prefix;
+    prefix << parameter << ',' << value << ',' << base << ',';
+    run_scene(s, seeds, c, p, 1, csv, prefix.str());
+  };
+  if (s.spec.gap_rate <= 0) return;
+  Params grid = paper;
+  grid.grid_size = defaults.grid_size;
+  run_with(Method::GridFilling, grid, "grid_size", grid.grid_size, "paper");
+  if (s.spec.gap_rate < highest_gap_rate) return;
+  for (double v : kMaxGapValues) {
+    Params p = defaults;
+    p.max_gap = static_cast<int>(v);
+    run_with(Method::GapTolerantFilling, p, "max_gap", v, "defaults");
   }
 }
 
@@ -370,6 +403,32 @@ std::string params_json(const Params& p) {
   return o.str();
 }
 
+std::string scene_model_json() {
+  std::ostringstream o;
+  o << "{\"blur_sigma\": " << SceneModel::kBlurSigma
+    << ", \"noise_sigma\": " << SceneModel::kNoiseSigma
+    << ", \"gap_run_min\": " << SceneModel::kGapRunMin
+    << ", \"gap_run_max\": " << SceneModel::kGapRunMax
+    << ", \"speck_share\": " << SceneModel::kSpeckShare << ", \"strokes\": " << SceneModel::kStrokes
+    << ", \"truth_area_tolerance\": " << SceneModel::kTruthAreaTolerance
+    << ", \"truth_analytic_tolerance\": " << SceneModel::kTruthAnalyticTolerance
+    << ", \"truth_centroid_tolerance\": " << SceneModel::kTruthCentroidTolerance << "}";
+  return o.str();
+}
+
+// Auto acquisition as the code has it (TrackerParams' defaults) and how the runs judge it.
+std::string acquisition_json() {
+  const TrackerParams tp;
+  std::string strategy = "unknown";
+  for (auto [name, s] : kStrategies)
+    if (s == tp.strategy) strategy = name;
+  std::ostringstream o;
+  o << "{\"default_strategy\": \"" << strategy << "\", \"candidates\": " << tp.candidates
+    << ", \"frames\": " << kAcquisitionFrames << ", \"sane_centroid\": " << kSaneCentroid
+    << ", \"sane_area\": " << kSaneArea << "}";
+  return o.str();
+}
+
 void write_meta(const Options& opt, const Params& compared, const Params& defaults, int scenes,
                 int inconsistent) {
   std::ofstream o(opt.out + "/meta.json");
@@ -388,7 +447,9 @@ void write_meta(const Options& opt, const Params& compared, const Params& defaul
     << ",\n  \"leak_factor\": " << kLeakFactor << ",\n  \"params\": " << params_json(compared)
     << ",\n  \"defaults\": " << params_json(defaults)
     << ",\n  \"edges\": {\"detector\": \"canny\", \"low\": " << EdgeParams{}.low
-    << ", \"high\": " << EdgeParams{}.high << ", \"blur\": " << EdgeParams{}.blur << "}\n}\n";
+    << ", \"high\": " << EdgeParams{}.high << ", \"blur\": " << EdgeParams{}.blur << "}"
+    << ",\n  \"scene_model\": " << scene_model_json()
+    << ",\n  \"acquisition\": " << acquisition_json() << "\n}\n";
 }
 
 int run(const Options& opt) {
@@ -407,10 +468,15 @@ int run(const Options& opt) {
   auto all = contenders(true);
   Progress progress(static_cast<long>(specs.size()) + (opt.quick ? 12 : 30) + 6);
 
-  std::ofstream runs(opt.out + "/runs.csv"), scenes(opt.out + "/scenes.csv");
+  std::ofstream runs(opt.out + "/runs.csv"), scenes(opt.out + "/scenes.csv"),
+      variants(opt.out + "/variants.csv");
   runs.precision(10);
   scenes.precision(10);
+  variants.precision(10);
   runs << kRunColumns << '\n';
+  variants << "parameter,value,base," << kRunColumns << '\n';
+  double highest_gap_rate = 0;
+  for (const SceneSpec& spec : specs) highest_gap_rate = std::max(highest_gap_rate, spec.gap_rate);
   scenes << "resolution,object,gap_rate,spurious,instance,scale,true_area,true_centroid_x,"
             "true_centroid_y,supersampled_area,supersampled_centroid_x,supersampled_centroid_y,"
             "analytic_area,contour_pixels,natural_gaps,gap_pixels_removed,spurious_pixels,"
@@ -429,6 +495,7 @@ int run(const Options& opt) {
     write_scene_row(scenes, s, ok);
     const std::vector<Seed> seeds = sample_seeds(s, opt.seeds, rng);
     for (Contender& c : all) run_scene(s, seeds, c, paper, opt.reps, runs, "");
+    run_variants(s, seeds, highest_gap_rate, paper, defaults, variants);
     std::ostringstream what;
     what << object_name(spec.object) << ' ' << spec.width << 'x' << spec.height << " gaps "
          << spec.gap_rate * 100 << '%';

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,9 +20,13 @@
 #include <opencv2/videoio.hpp>
 #include <string>
 #include <thread>
+#include <unordered_set>
 #include <vector>
 
 #include "alloc_count.hpp"
+#include "box_blur.hpp"
+#include "canny.hpp"
+#include "machine.hpp"
 #include "method_list.hpp"
 #include "peers.hpp"
 #include "scene.hpp"
@@ -206,6 +211,14 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// The median over rounds of a's time / b's (each round's contenders ran back to back).
+double median_ratio(const Contender& a, const Contender& b) {
+  std::vector<double> r;
+  for (std::size_t k = 0; k < a.per_frame_us.size() && k < b.per_frame_us.size(); ++k)
+    r.push_back(a.per_frame_us[k] / b.per_frame_us[k]);
+  return median(r);
+}
+
 // Rounds of batches, the contenders' order rotated every round.
 void race(std::vector<Contender>& cs, const Clip& clip, int rounds, int batch) {
   const std::size_t n = clip.gray.size();
@@ -245,7 +258,7 @@ void compare_with_peers(Clip& clip, int rounds, int batch, bool have_cvtracker) 
   OpenCvFloodFill flood;
   cv::Mat edges;
   cs.push_back({"cv::Canny + cv::floodFill", [&](int i) {
-                  cv::Canny(clip.gray[i], edges, 50, 150, 3, false);
+                  cv::Canny(clip.gray[i], edges, EdgeParams{}.low, EdgeParams{}.high, 3, false);
                   Features f = flood.estimate(edges, clip.seeds[i]);
                   (void)f;
                 }});
@@ -266,18 +279,13 @@ void compare_with_peers(Clip& clip, int rounds, int batch, bool have_cvtracker) 
     row("per_frame", &clip, c.name, "best_us",
         *std::min_element(c.per_frame_us.begin(), c.per_frame_us.end()));
   }
-  // The ratios, round by round (each round's contenders ran back to back), then the median.
   auto ratio = [&](const std::string& a, const std::string& b) {
     const Contender *ca = nullptr, *cb = nullptr;
     for (const Contender& c : cs) {
       if (c.name == a) ca = &c;
       if (c.name == b) cb = &c;
     }
-    if (!ca || !cb) return;
-    std::vector<double> r;
-    for (std::size_t k = 0; k < ca->per_frame_us.size(); ++k)
-      r.push_back(ca->per_frame_us[k] / cb->per_frame_us[k]);
-    row("ratio", &clip, a + " / " + b, "median", median(r));
+    if (ca && cb) row("ratio", &clip, a + " / " + b, "median", median_ratio(*ca, *cb));
   };
   for (const MethodInfo& m : kMethods) {
     const std::string us = std::string("projtrack ") + m.nick;
@@ -286,14 +294,14 @@ void compare_with_peers(Clip& clip, int rounds, int batch, bool have_cvtracker) 
     ratio("cvtracker MOSSE", us);
   }
   if (clip.object_share > 0) row("clip", &clip, "object", "share_of_frame", clip.object_share);
+  row("clip", &clip, "start box", "share_of_frame",
+      static_cast<double>(clip.first_box.width) * clip.first_box.height /
+          (static_cast<double>(clip.width) * clip.height));
   row("clip", &clip, "frames", "count", static_cast<double>(clip.gray.size()));
 }
 
 // Section 4: the library's cost against the object's size, at two frame sizes.
-void cost_by_object_size(int rounds, bool quick) {
-  const std::vector<double> object_px =
-      quick ? std::vector<double>{4000, 30000}
-            : std::vector<double>{2000, 5000, 12000, 30000, 60000, 100000};
+void cost_by_object_size(const std::vector<double>& object_px, int rounds) {
   for (auto [w, h] : {std::pair{640, 480}, std::pair{1920, 1080}}) {
     for (double px : object_px) {
       auto clip = generated_clip(w, h, px / (static_cast<double>(w) * h), 8, 0);  // in place
@@ -320,6 +328,79 @@ void cost_by_object_size(int rounds, bool quick) {
   }
 }
 
+// The least margin around the object's box that TrackerParams::edge_margin documents.
+constexpr int kLeastMargin = 16;
+
+// The region the tracker computes edges in around an object at rest, as TrackerParams documents
+// it: the object's box grown by edge_margin of its larger side (at least kLeastMargin px), and
+// for gap-tolerant filling by max_gap + 2 px more (the band it reads beside its lines).
+Rect tracker_region(const Rect& box, int width, int height, Method m) {
+  const double grown_by = TrackerParams{}.edge_margin * std::max(box.width, box.height);
+  int margin = std::max(kLeastMargin, static_cast<int>(grown_by));
+  if (m == Method::GapTolerantFilling) margin += Params{}.max_gap + 2;
+  const int x0 = std::max(0, box.x - margin), y0 = std::max(0, box.y - margin);
+  const int x1 = std::min(width, box.x + box.width + margin);
+  const int y1 = std::min(height, box.y + box.height + margin);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+// Our box blur and Canny against cv::blur and cv::Canny, side by side on the same crops of the
+// same frames: the regions the tracker asks for around objects of each size (and whole frames,
+// what searching costs). Canny runs on the blurred crop, with the element's thresholds.
+void edge_stages(const std::vector<double>& object_px, int rounds, int batch) {
+  const EdgeParams ep;
+  const Method method = method_from_name(kDefaultMethod).value_or(Method::GridFilling);
+  struct Case {
+    std::unique_ptr<Clip> clip;
+    Rect region;
+    double object_px;  // 0: the whole frame
+  };
+  std::vector<Case> cases;
+  for (double px : object_px) {
+    auto clip = generated_clip(640, 480, px / (640.0 * 480), 8, 0);
+    const Rect region = tracker_region(clip->first_box, clip->width, clip->height, method);
+    cases.push_back({std::move(clip), region, px});
+  }
+  for (auto [w, h] : {std::pair{640, 480}, std::pair{1920, 1080}})
+    cases.push_back({generated_clip(w, h, 0.10, 4, 0), Rect{0, 0, w, h}, 0});
+  for (const Case& k : cases) {
+    const Clip& clip = *k.clip;
+    const Rect region = k.region;
+    const cv::Rect roi(region.x, region.y, region.width, region.height);
+    std::vector<cv::Mat> crops, blurred;  // contiguous, as a region's buffers are
+    for (const cv::Mat& g : clip.gray) {
+      crops.push_back(g(roi).clone());
+      cv::Mat b;
+      cv::blur(crops.back(), b, {3, 3}, {-1, -1}, cv::BORDER_REPLICATE);
+      blurred.push_back(b);
+    }
+    cv::Mat out(region.height, region.width, CV_8U), edges;
+    CannyDetector canny;
+    const auto view = [](const cv::Mat& m) {
+      return ImageView(m.data, m.cols, m.rows, static_cast<std::ptrdiff_t>(m.step));
+    };
+    std::vector<Contender> cs;
+    cs.push_back({"projtrack box blur", [&](int i) {
+                    box_blur3(view(crops[i]), {0, 0, region.width, region.height}, out.data,
+                              static_cast<std::ptrdiff_t>(out.step));
+                  }});
+    cs.push_back({"cv::blur", [&](int i) {
+                    cv::blur(crops[i], out, {3, 3}, {-1, -1}, cv::BORDER_REPLICATE);
+                  }});
+    cs.push_back(
+        {"projtrack Canny", [&](int i) { canny.detect(view(blurred[i]), ep.low, ep.high); }});
+    cs.push_back(
+        {"cv::Canny", [&](int i) { cv::Canny(blurred[i], edges, ep.low, ep.high, 3, false); }});
+    race(cs, clip, rounds, batch);
+    const std::string key =
+        "region_" + std::to_string(region.width) + "x" + std::to_string(region.height);
+    row("edge_region", &clip, key, "object_px", k.object_px);
+    for (const Contender& c : cs) row("edge_stages", &clip, c.name, key, median(c.per_frame_us));
+    row("edge_ratio", &clip, "cv::blur / projtrack box blur", key, median_ratio(cs[1], cs[0]));
+    row("edge_ratio", &clip, "cv::Canny / projtrack Canny", key, median_ratio(cs[3], cs[2]));
+  }
+}
+
 // Section 5: heap allocations per frame in steady state, and memory over 10 000 frames.
 long resident_kib() {
   std::ifstream statm("/proc/self/statm");
@@ -329,6 +410,8 @@ long resident_kib() {
 }
 
 void allocations_and_memory(Clip& clip, int frames) {
+  constexpr int kCounted = 200;  // frames whose allocations are counted, after warm-up
+  const int mark = std::min(1000, frames / 2);  // memory is compared from here to the last frame
   const std::size_t n = clip.gray.size();
   for (Method method : kAllMethods) {  // the library alone
     Tracker t;
@@ -342,17 +425,17 @@ void allocations_and_memory(Clip& clip, int frames) {
     };
     for (std::size_t i = 0; i < 2 * n; ++i) frame(i);  // buffers grow to the largest region
     const long before = allocations.load();
-    for (std::size_t i = 2 * n; i < 2 * n + 200; ++i) frame(i);
+    for (std::size_t i = 2 * n; i < 2 * n + kCounted; ++i) frame(i);
     row("allocations", &clip, "Tracker::track " + std::string(method_name(method)), "per_frame",
-        (allocations.load() - before) / 200.0);
+        static_cast<double>(allocations.load() - before) / kCounted);
   }
   // The element, less what the harness itself allocates around an element that does nothing.
   auto per_frame = [&](const std::string& launch) {
     Harness h(launch, caps_of("I420", clip));
     for (std::size_t i = 0; i < 2 * n; ++i) h.run(clip.i420[i % n]);
     const long before = allocations.load();
-    for (std::size_t i = 0; i < 200; ++i) h.run(clip.i420[i % n]);
-    return (allocations.load() - before) / 200.0;
+    for (std::size_t i = 0; i < kCounted; ++i) h.run(clip.i420[i % n]);
+    return static_cast<double>(allocations.load() - before) / kCounted;
   };
   const double identity = per_frame("identity");
   const double with_messages = per_frame(projtrack_launch(kDefaultMethod, clip));
@@ -361,26 +444,58 @@ void allocations_and_memory(Clip& clip, int frames) {
       with_messages - identity);
   row("allocations", &clip, "projtrack element (post-messages=false)", "per_frame",
       without - identity);
+  row("allocation_count", &clip, "frames counted", "count", kCounted);
 
   Harness h(projtrack_launch(kDefaultMethod, clip), caps_of("I420", clip));
-  long at_1000 = 0;
+  long at_mark = 0;
   for (int i = 0; i < frames; ++i) {
     h.run(clip.i420[static_cast<std::size_t>(i) % n]);
-    if (i + 1 == std::min(1000, frames)) at_1000 = resident_kib();
+    if (i + 1 == mark) at_mark = resident_kib();
   }
-  row("memory", &clip, "projtrack element", "rss_kib_at_1000", static_cast<double>(at_1000));
+  row("memory", &clip, "projtrack element", "mark_frames", mark);
+  row("memory", &clip, "projtrack element", "rss_kib_at_mark", static_cast<double>(at_mark));
   row("memory", &clip, "projtrack element", "rss_kib_at_end", static_cast<double>(resident_kib()));
   row("memory", &clip, "projtrack element", "frames", frames);
 }
 
 // Section 6: concurrent 30 fps streams in one process, each a real pipeline with its own
-// streaming thread (appsrc ! projtrack ! fakesink), fed as fast as they take frames.
-double streams_fps(const Clip& clip, int streams, int frames_each) {
+// streaming thread (appsrc ! projtrack ! fakesink), fed as fast as they take frames. What counts
+// is a frame tracked: its projtrack message arrived with a status that carries features. Pushes
+// the source refused, streams that did not finish in time and errors are counted too.
+struct StreamsResult {
+  long pushed = 0, refused = 0;    // buffers offered, and those the source did not take
+  long messages = 0, tracked = 0;  // projtrack messages, and those with a tracking status
+  int timeouts = 0, errors = 0;    // streams with no end of stream in time, or an error
+  double seconds = 0;
+};
+
+GstBusSyncReply count_message(GstBus*, GstMessage* m, gpointer data) {
+  if (GST_MESSAGE_TYPE(m) != GST_MESSAGE_ELEMENT || !gst_message_has_name(m, "projtrack"))
+    return GST_BUS_PASS;
+  static const std::unordered_set<std::string> tracking = [] {
+    std::unordered_set<std::string> names;
+    for (int s = 0; s <= static_cast<int>(Status::InvalidParameters); ++s)
+      if (has_features(static_cast<Status>(s)))
+        names.insert(std::string(status_name(static_cast<Status>(s))));
+    return names;
+  }();
+  auto* counts = static_cast<std::atomic<long>*>(data);  // messages, tracked
+  const char* status = gst_structure_get_string(gst_message_get_structure(m), "status");
+  ++counts[0];
+  if (status && tracking.count(status)) ++counts[1];
+  gst_message_unref(m);
+  return GST_BUS_DROP;  // counted where it was posted; nothing piles up on the bus
+}
+
+StreamsResult run_streams(const Clip& clip, int streams, int frames_each, int timeout_s) {
   struct Stream {
     GstElement* pipeline;
     GstElement* src;
+    std::atomic<long> counts[2] = {0, 0};
+    long refused = 0;
   };
-  std::vector<Stream> ss;
+  StreamsResult res;
+  std::vector<std::unique_ptr<Stream>> ss;
   for (int s = 0; s < streams; ++s) {
     const std::string launch = "appsrc name=src format=time block=true max-bytes=2000000 caps=\"" +
                                caps_of("I420", clip) + "\" ! " +
@@ -390,43 +505,77 @@ double streams_fps(const Clip& clip, int streams, int frames_each) {
     if (!p) {
       std::fprintf(stderr, "projtrack-speed: %s\n", err ? err->message : "parse failed");
       g_clear_error(&err);
-      return 0;
+      ++res.errors;
+      continue;
     }
-    ss.push_back({p, gst_bin_get_by_name(GST_BIN(p), "src")});
+    auto stream = std::make_unique<Stream>();
+    stream->pipeline = p;
+    stream->src = gst_bin_get_by_name(GST_BIN(p), "src");
+    GstBus* bus = gst_element_get_bus(p);
+    gst_bus_set_sync_handler(bus, count_message, stream->counts, nullptr);
+    gst_object_unref(bus);
     gst_element_set_state(p, GST_STATE_PLAYING);
+    ss.push_back(std::move(stream));
   }
   const auto t0 = Clock::now();
   std::vector<std::thread> feeders;
-  for (Stream& s : ss) {
-    feeders.emplace_back([&clip, &s, frames_each] {
+  for (auto& s : ss) {
+    feeders.emplace_back([&clip, s = s.get(), frames_each] {
       const std::size_t n = clip.i420.size();
       for (int i = 0; i < frames_each; ++i) {
         GstBuffer* b = gst_buffer_copy(clip.i420[static_cast<std::size_t>(i) % n]);  // shallow
         GST_BUFFER_PTS(b) = gst_util_uint64_scale(i, GST_SECOND, 30);
         GST_BUFFER_DURATION(b) = GST_SECOND / 30;
-        GstFlowReturn ret;
-        g_signal_emit_by_name(s.src, "push-buffer", b, &ret);
+        GstFlowReturn ret = GST_FLOW_ERROR;
+        g_signal_emit_by_name(s->src, "push-buffer", b, &ret);
         gst_buffer_unref(b);
+        s->refused += ret != GST_FLOW_OK;
       }
       GstFlowReturn ret;
-      g_signal_emit_by_name(s.src, "end-of-stream", &ret);
+      g_signal_emit_by_name(s->src, "end-of-stream", &ret);
     });
   }
   for (std::thread& f : feeders) f.join();
-  for (Stream& s : ss) {
-    GstBus* bus = gst_element_get_bus(s.pipeline);
+  for (auto& s : ss) {
+    GstBus* bus = gst_element_get_bus(s->pipeline);
     GstMessage* m = gst_bus_timed_pop_filtered(
-        bus, 120 * GST_SECOND, static_cast<GstMessageType>(GST_MESSAGE_EOS | GST_MESSAGE_ERROR));
-    if (m) gst_message_unref(m);
+        bus, timeout_s * GST_SECOND,
+        static_cast<GstMessageType>(GST_MESSAGE_EOS | GST_MESSAGE_ERROR));
+    if (!m) {
+      ++res.timeouts;
+    } else {
+      res.errors += GST_MESSAGE_TYPE(m) == GST_MESSAGE_ERROR;
+      gst_message_unref(m);
+    }
     gst_object_unref(bus);
   }
-  const double elapsed = seconds_since(t0);
-  for (Stream& s : ss) {
-    gst_element_set_state(s.pipeline, GST_STATE_NULL);
-    gst_object_unref(s.src);
-    gst_object_unref(s.pipeline);
+  res.seconds = seconds_since(t0);
+  for (auto& s : ss) {
+    gst_element_set_state(s->pipeline, GST_STATE_NULL);
+    res.pushed += frames_each;
+    res.refused += s->refused;
+    res.messages += s->counts[0];
+    res.tracked += s->counts[1];
+    gst_object_unref(s->src);
+    gst_object_unref(s->pipeline);
   }
-  return streams * frames_each / elapsed;
+  return res;
+}
+
+void streams_rows(const Clip& clip, int streams, int frames_each) {
+  constexpr int kTimeoutSeconds = 120;
+  const StreamsResult r = run_streams(clip, streams, frames_each, kTimeoutSeconds);
+  const std::string what = std::to_string(streams) + (streams == 1 ? " stream" : " streams");
+  row("streams", &clip, what, "streams", streams);
+  row("streams", &clip, what, "fps", r.tracked / r.seconds);  // frames tracked per second
+  row("streams", &clip, what, "frames_pushed", static_cast<double>(r.pushed));
+  row("streams", &clip, what, "pushes_refused", static_cast<double>(r.refused));
+  row("streams", &clip, what, "messages", static_cast<double>(r.messages));
+  row("streams", &clip, what, "frames_tracked", static_cast<double>(r.tracked));
+  row("streams", &clip, what, "timeouts", r.timeouts);
+  row("streams", &clip, what, "timeout_s", kTimeoutSeconds);
+  row("streams", &clip, what, "errors", r.errors);
+  row("streams", &clip, what, "seconds", r.seconds);
 }
 
 // Not a time: what each method makes of real footage with no ground truth. The tracker (as the
@@ -460,19 +609,15 @@ void real_clip_statuses(const Clip& clip) {
   }
 }
 
-void write_meta(const std::string& dir) {
+void write_meta(const std::string& dir, const std::string& measured) {
   std::ofstream meta(dir + "/meta.json");
-  std::string cpu = "unknown";
-  std::ifstream info("/proc/cpuinfo");
-  for (std::string line; std::getline(info, line);) {
-    if (line.rfind("model name", 0) == 0) {
-      cpu = line.substr(line.find(':') + 2);
-      break;
-    }
-  }
-  meta << "{\n  \"cpu\": \"" << cpu << "\",\n  \"cores\": " << std::thread::hardware_concurrency()
-       << ",\n  \"opencv\": \"" << CV_VERSION << "\",\n  \"gstreamer\": \"" << gst_version_string()
-       << "\",\n  \"opencv_threads\": " << cv::getNumThreads() << "\n}\n";
+  meta << "{\n  \"measured\": \"" << measured << "\",\n  \"cpu\": \"" << cpu_model()
+       << "\",\n  \"cores\": " << std::thread::hardware_concurrency() << ",\n  \"opencv\": \""
+       << CV_VERSION << "\",\n  \"gstreamer\": \"" << gst_version_string()
+       << "\",\n  \"opencv_threads\": " << cv::getNumThreads()
+       << ",\n  \"edge_margin\": " << TrackerParams{}.edge_margin
+       << ",\n  \"least_margin_px\": " << kLeastMargin << ",\n  \"canny\": [" << EdgeParams{}.low
+       << ", " << EdgeParams{}.high << "]\n}\n";
 }
 
 }  // namespace
@@ -513,6 +658,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "projtrack-speed: cannot write %s/methods.csv\n", out.c_str());
     return 1;
   }
+  const std::string measured = utc_now();
   GstElementFactory* f = gst_element_factory_find("projtrack");
   if (!f) {
     std::fprintf(stderr, "projtrack-speed: the projtrack element is not found (GST_PLUGIN_PATH)\n");
@@ -553,17 +699,22 @@ int main(int argc, char** argv) {
       allocations_and_memory(*gen, quick ? 300 : 10000);
     }
   }
+  const std::vector<double> object_px =
+      quick ? std::vector<double>{4000, 30000}
+            : std::vector<double>{2000, 5000, 12000, 30000, 60000, 100000};
   std::fprintf(stderr, "projtrack-speed: cost by object size\n");
-  cost_by_object_size(quick ? 2 : 9, quick);
+  cost_by_object_size(object_px, quick ? 2 : 9);
+  std::fprintf(stderr, "projtrack-speed: edge stages against OpenCV's\n");
+  edge_stages(object_px, rounds, batch);
 
   std::fprintf(stderr, "projtrack-speed: concurrent streams\n");
   auto vga = generated_clip(640, 480, 0.10, 60);
   const int frames_each = quick ? 30 : 600;
-  row("streams", vga.get(), "1 stream", "fps", streams_fps(*vga, 1, frames_each));
-  row("streams", vga.get(), "8 streams", "fps", streams_fps(*vga, 8, frames_each));
+  streams_rows(*vga, 1, frames_each);
+  streams_rows(*vga, 8, frames_each);
   row("streams", vga.get(), "cores", "count", std::thread::hardware_concurrency());
   std::fclose(csv);
-  write_meta(out);
+  write_meta(out, measured);
   gst_deinit();
   return 0;
 }

@@ -159,10 +159,11 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
         img, cv::Point(static_cast<int>(spec.distractor->x), static_cast<int>(spec.distractor->y)),
         static_cast<int>(18 * s), cv::Scalar(215), cv::FILLED, cv::LINE_AA);
   if (spec.occluder) cv::rectangle(img, *spec.occluder, cv::Scalar(128), cv::FILLED);
-  cv::GaussianBlur(img, img, cv::Size(), 0.8);  // per pixel: a sharper sensor at higher resolution
+  cv::GaussianBlur(img, img, cv::Size(),
+                   SceneModel::kBlurSigma);  // per pixel: a sharper sensor at higher resolution
   cv::Mat noise(h, w, CV_32F);
   cv::RNG cvrng(rng());
-  cvrng.fill(noise, cv::RNG::NORMAL, 0, 3.0);
+  cvrng.fill(noise, cv::RNG::NORMAL, 0, SceneModel::kNoiseSigma);
   img += noise;
   img.convertTo(sc.image, CV_8U);
 
@@ -221,7 +222,7 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
   };
   const int target = static_cast<int>(std::lround(spec.gap_rate * contour.size()));
   std::uniform_int_distribution<std::size_t> start(0, contour.size() - 1);
-  std::uniform_int_distribution<int> length(1, 3);
+  std::uniform_int_distribution<int> length(SceneModel::kGapRunMin, SceneModel::kGapRunMax);
   for (int tries = 0; sc.gap_pixels_removed < target && tries < 100000; ++tries) {
     const std::size_t i0 = start(rng);
     const int len = std::min(length(rng), target - sc.gap_pixels_removed);
@@ -257,10 +258,10 @@ Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params) {
     std::vector<cv::Point> inside;
     cv::findNonZero(interior, inside);
     std::uniform_int_distribution<std::size_t> pick(0, inside.size() - 1);
-    const int specks = static_cast<int>(0.004 * inside.size());
+    const int specks = static_cast<int>(SceneModel::kSpeckShare * inside.size());
     for (int i = 0; i < specks; ++i) sc.edges.at<std::uint8_t>(inside[pick(rng)]) = 255;
     std::uniform_real_distribution<double> angle(0, 2 * M_PI), len(6 * s, 14 * s);
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < SceneModel::kStrokes; ++i) {
       const cv::Point a = inside[pick(rng)];
       const double t = angle(rng), l = len(rng);
       const cv::Point b(a.x + static_cast<int>(l * std::cos(t)),
@@ -276,11 +277,12 @@ bool truth_is_consistent(const Scene& s, std::string* why) {
   const double area_err = std::abs(s.true_area / s.supersampled_area - 1);
   const double centroid_err = distance(s.true_centroid, s.supersampled_centroid);
   std::string problem;
-  if (area_err > 0.01)
+  if (area_err > SceneModel::kTruthAreaTolerance)
     problem += "area differs from the supersampled count by " + std::to_string(area_err) + "; ";
-  if (centroid_err > 0.25)
+  if (centroid_err > SceneModel::kTruthCentroidTolerance)
     problem += "centroid differs by " + std::to_string(centroid_err) + " px; ";
-  if (s.analytic_area > 0 && std::abs(s.true_area / s.analytic_area - 1) > 0.005)
+  if (s.analytic_area > 0 &&
+      std::abs(s.true_area / s.analytic_area - 1) > SceneModel::kTruthAnalyticTolerance)
     problem += "area differs from pi r^2; ";
   if (why) *why = problem;
   return problem.empty();

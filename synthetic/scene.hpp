@@ -15,6 +15,21 @@
 namespace projtrack::synthetic {
 
 enum class Object { Sphere, Hand };
+
+// The scene model's constants (bench/main.cpp writes them into meta.json for the report).
+struct SceneModel {
+  static constexpr double kBlurSigma = 0.8;     // optical blur, px, at every resolution
+  static constexpr double kNoiseSigma = 3.0;    // sensor noise, grey levels
+  static constexpr int kGapRunMin = 1;          // a deliberate gap removes this many contour pixels
+  static constexpr int kGapRunMax = 3;          // ... up to this many, in a row
+  static constexpr double kSpeckShare = 0.004;  // spurious specks: this share of the interior
+  static constexpr int kStrokes = 4;            // and this many short strokes
+  // The mask's truth agrees with the independent counts when the area is within this share of
+  // the supersampled one (and of π r² for the sphere) and the centroid within this many px.
+  static constexpr double kTruthAreaTolerance = 0.01;
+  static constexpr double kTruthAnalyticTolerance = 0.005;
+  static constexpr double kTruthCentroidTolerance = 0.25;
+};
 const char* object_name(Object o);
 
 struct SceneSpec {
@@ -74,8 +89,8 @@ struct Scene {
 
 Scene make_scene(const SceneSpec& spec, const EdgeParams& edge_params);
 
-// True when the mask's area and centroid agree with the independent counts (area within 1 %,
-// centroid within 0.25 px, and π r² within 0.5 % for the sphere); `why` says what disagrees.
+// True when the mask's area and centroid agree with the independent counts (SceneModel's
+// tolerances); `why` says what disagrees.
 bool truth_is_consistent(const Scene& s, std::string* why);
 
 struct Seed {

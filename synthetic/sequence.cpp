@@ -21,8 +21,8 @@ std::vector<SequenceStep> run_sequence(int n, const std::function<SceneSpec(int)
     step.visible = s.true_area > 0.5 * first_area;
     const Features& f = step.result.features;
     step.sane = has_features(step.result.status) && s.true_area > 0 &&
-                distance(f.centroid, s.true_centroid) < 0.1 * std::sqrt(s.true_area) &&
-                std::abs(f.area / s.true_area - 1) < 0.35;
+                distance(f.centroid, s.true_centroid) < kSaneCentroid * std::sqrt(s.true_area) &&
+                std::abs(f.area / s.true_area - 1) < kSaneArea;
     steps.push_back(step);
   }
   return steps;

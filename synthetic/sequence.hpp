@@ -16,8 +16,13 @@ struct SequenceStep {
   Point2d true_centroid;
   TrackResult result;
   bool visible = false;  // at least half of the object (as on the first frame) is in the frame
-  bool sane = false;     // tracking, centroid within 10 % of √area, area within 35 % of the truth
+  bool sane = false;     // tracking, centroid and area within kSane* of the truth
 };
+
+// A frame is tracked sanely when the centroid is within this share of √(true area) of the truth
+// and the area within this share of the true area (bench/main.cpp records them in meta.json).
+inline constexpr double kSaneCentroid = 0.1;
+inline constexpr double kSaneArea = 0.35;
 
 // Renders frames spec(0..n-1) at 30 fps and tracks them; `seed` is given before the first frame.
 std::vector<SequenceStep> run_sequence(int n, const std::function<SceneSpec(int)>& spec,

@@ -43,6 +43,10 @@ for s in scenes:
     if float(s['analytic_area']) > 0:
         assert abs(float(s['true_area']) / float(s['analytic_area']) - 1) < 0.005, s
 
+variants = list(csv.DictReader(open(os.path.join(out, 'variants.csv'))))
+assert {(r['parameter'], r['method']) for r in variants} == {
+    ('grid_size', 'grid-filling'), ('max_gap', 'gap-tolerant-filling')}, variants[:2]
+
 doc = os.path.join(out, 'benchmarks.md')
 subprocess.run([sys.executable, report, out, doc], check=True, timeout=300)
 text = open(doc).read()
@@ -50,6 +54,8 @@ for claim in ['C1', 'C2', 'C3', 'C4', 'C5', 'C6']:
     assert f'| {claim}: ' in text, claim
 for m in expected:
     assert f'| {m} |' in text, m
+assert 'nan' not in text.lower(), 'a NaN in the report'
+assert 'not recorded' not in text, 'a setting the benchmark did not record'
 figures = ['gap-rate.png', 'time-resolution.png', 'sweep.png']
 figures += [f'{m["method"]}-{obj}.png' for m in table for obj in ('sphere', 'hand')]
 for f in figures:

@@ -6,6 +6,7 @@ and the report renders every target. Times are never asserted.
     test_speed_quick.py PROJTRACK_SPEED REPORT_PY OUT_DIR
 """
 import csv
+import json
 import os
 import shutil
 import subprocess
@@ -42,12 +43,27 @@ for m in methods:
 on = find('allocations', 'projtrack element (messages on)', 'per_frame')[0]
 off = find('allocations', 'projtrack element (post-messages=false)', 'per_frame')[0]
 assert 0 <= off < on, (on, off)
-rss0 = find('memory', 'projtrack element', 'rss_kib_at_1000')[0]
+rss0 = find('memory', 'projtrack element', 'rss_kib_at_mark')[0]
 rss1 = find('memory', 'projtrack element', 'rss_kib_at_end')[0]
 assert rss1 - rss0 < 1024, (rss0, rss1)
 for size_row in [r for r in rows if r['section'] == 'size']:
     assert float(size_row['value']) > 0, size_row
-assert find('streams', '8 streams', 'fps', clip='generated')[0] > 0
+# Every frame pushed to the concurrent streams came back tracked, in time, without error.
+for what in ['1 stream', '8 streams']:
+    pushed = find('streams', what, 'frames_pushed')[0]
+    assert pushed > 0 and find('streams', what, 'frames_tracked') == [pushed], what
+    assert find('streams', what, 'pushes_refused') == [0.0], what
+    assert find('streams', what, 'timeouts') == [0.0] and find('streams', what, 'errors') == [0.0]
+    assert find('streams', what, 'fps')[0] > 0
+# Our blur and Canny beside OpenCV's on every region measured.
+regions = [r['what'] for r in rows if r['section'] == 'edge_region']
+assert regions, 'no edge regions'
+for region in regions:
+    for what in ['projtrack box blur', 'cv::blur', 'projtrack Canny', 'cv::Canny']:
+        res = [r for r in rows if r['section'] == 'edge_stages' and r['what'] == what
+               and r['key'] == region]
+        assert len(res) == 1 and float(res[0]['value']) > 0, (region, what)
+assert json.load(open(os.path.join(out, 'meta.json')))['measured'].endswith('UTC')
 
 doc = os.path.join(out, 'performance.md')
 subprocess.run([sys.executable, report, out, doc], check=True, timeout=300)
@@ -55,5 +71,10 @@ text = open(doc).read()
 for target in ['| 1 |', '| 2 |', '| 3 |', '| 4 |', '| 5 |', '| 6 |']:
     assert target in text, target
 assert 'nan' not in text.lower().replace('nanosec', ''), 'a NaN in the report'
+# cvtracker (target 3) needs gstreamer1.0-opencv, which only ./run bench --speed installs.
+assert 'not recorded' not in text, 'a setting the benchmark did not record'
+for target in ['| 1 |', '| 2 |', '| 4 |', '| 5 |', '| 6 |']:
+    line = next(ln for ln in text.splitlines() if ln.startswith(target))
+    assert 'not measured' not in line, line
 assert os.path.exists(os.path.join(out, 'figures', 'cost_by_object_size.svg'))
 print('speed quick run and report: ok')
