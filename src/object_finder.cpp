@@ -137,6 +137,40 @@ bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const F
   return true;
 }
 
+bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const FinderParams& p,
+                            Mask& out, std::string& why) {
+  const Rect b = clip_to_frame(box, frame.luma.width, frame.luma.height);
+  if (b.empty()) {
+    why = "the box lies outside the frame";
+    return false;
+  }
+  const int s = std::max(
+      1, work_scale(static_cast<double>(frame.luma.width) * frame.luma.height, p.work_pixels));
+  const Rect wb = to_work(b, s);
+  const Point2i centre{b.x + b.width / 2, b.y + b.height / 2};
+  if (from_seed(frame, centre, p, out, why)) {  // within the box
+    for (int y = 0; y < out.rect().height; ++y)
+      for (int x = 0; x < out.rect().width; ++x)
+        if (!wb.contains({x + out.rect().x, y + out.rect().y})) out.row(y)[x] = 0;
+    out.crop();
+    if (!out.empty() && moments(out).area >= 0.2 * wb.width * wb.height) return true;
+  }
+  // Nothing of its own colours fills the box: the user's box is the object's outline.
+  load(frame, p);
+  out.reset(wb & work_.rect());
+  const double cx = wb.x + wb.width / 2.0 - 0.5, cy = wb.y + wb.height / 2.0 - 0.5;
+  const double rx = wb.width / 2.0, ry = wb.height / 2.0;
+  for (int y = 0; y < out.rect().height; ++y) {
+    for (int x = 0; x < out.rect().width; ++x) {
+      const double dx = (x + out.rect().x - cx) / rx, dy = (y + out.rect().y - cy) / ry;
+      out.row(y)[x] = dx * dx + dy * dy <= 1.0;
+    }
+  }
+  out.crop();
+  why.clear();
+  return !out.empty();
+}
+
 bool ObjectFinder::from_motion(const ColorView& frame, const MotionDetector::Motion& motion,
                                const FinderParams& p, Mask& out, Point2i& seed, std::string& why) {
   load(frame, p);

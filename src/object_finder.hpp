@@ -42,6 +42,10 @@ class ObjectFinder {
   // filled. False (and `why`) when there is none within reach of the seed.
   bool from_seed(const ColorView& frame, Point2i seed, const FinderParams& p, Mask& out,
                  std::string& why);
+  // The object in `box` (frame pixels): the region around the box's centre as from_seed finds it,
+  // kept within the box; the ellipse inscribed in the box when no such region is there.
+  bool from_box(const ColorView& frame, const Rect& box, const FinderParams& p, Mask& out,
+                std::string& why);
   // The moving object: of the regions of colours not seen on the border, the one with the most
   // moving pixels for its size that does not touch the border (the arm that waves an object
   // does) and is not static. `seed` gets its deepest point.

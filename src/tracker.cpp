@@ -14,6 +14,12 @@ void Tracker::seed(Point2i p) {
   inner_ = p;
 }
 
+void Tracker::seed_box(const Rect& box) {
+  reset();
+  inner_ = Point2i{box.x + box.width / 2, box.y + box.height / 2};
+  box_ = box;
+}
+
 void Tracker::reset() {
   drop(false);
   acquisition_.reset();
@@ -25,6 +31,7 @@ void Tracker::drop(bool keep_object) {
     lost_centroid_ = last_good_->centroid;
   }
   inner_.reset();
+  box_.reset();
   last_good_.reset();
   refused_in_a_row_ = 0;
   pointer_.interrupt();
@@ -57,6 +64,7 @@ void Tracker::accept(const Features& f, double t, int width, int height, const T
                                    f.centroid.y - last_good_->centroid.y}
                          : Point2d{0, 0};
   inner_ = f.inner_point;
+  box_.reset();
   last_good_ = f;
   refused_in_a_row_ = 0;
   pointer_.update(f, width, height, t, tp);
@@ -184,7 +192,8 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
       why = "the inner point lies outside the frame";
       return false;
     }
-    found = finder_.from_seed(frame, seed, tp.finder, first_, why);
+    found = box_ ? finder_.from_box(frame, *box_, tp.finder, first_, why)
+                 : finder_.from_seed(frame, seed, tp.finder, first_, why);
   } else if (tp.acquisition == Acquisition::Center) {
     found = finder_.from_seed(frame, seed, tp.finder, first_, why);
     if (!found) why = "at the frame centre: " + why;

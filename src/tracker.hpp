@@ -44,6 +44,9 @@ class Tracker {
  public:
   // Tracks from `p` on the next frame, whatever the acquisition mode: a new object.
   void seed(Point2i p);
+  // Tracks the object in `box` (a user's rectangle around it) on the next frame: its centre is
+  // the inner point; the appearance model takes the object's first silhouette within the box.
+  void seed_box(const Rect& box);
   // Forgets the object; Auto and Center acquisition start over.
   void reset();
   const std::optional<Point2i>& inner_point() const { return inner_; }
@@ -89,6 +92,7 @@ class Tracker {
   EdgeMap edge_map_;
   std::array<std::unique_ptr<Estimator>, kMethodCount> estimators_;  // made on first use
   std::optional<Point2i> inner_;
+  std::optional<Rect> box_;  // the box a track was seeded with, until it starts
   std::optional<Features> last_good_;
   Point2d velocity_;  // of the centroid between the last two accepted frames, px per frame
   int refused_in_a_row_ = 0;

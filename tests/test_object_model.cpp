@@ -243,5 +243,21 @@ TEST(ObjectModel, ASeedOutsideTheFrameSaysSo) {
   EXPECT_FALSE(r.features.valid());
 }
 
+TEST(ObjectModel, StartsFromABoxAroundTheObject) {
+  const Frame f = render({});
+  Tracker t;
+  t.seed_box({115, 75, 90, 90});  // a user's rectangle dragged around the disc
+  const TrackResult r = t.track(f.view(), EdgeParams{}, 0, Method::GapTolerantFilling, {}, {});
+  EXPECT_TRUE(r.acquired);
+  expect_close(r, f, 3, 0.1, "from a box");
+  // A box over plain wall holds nothing told apart from its surroundings: a defined refusal.
+  Tracker wall;
+  wall.seed_box({10, 150, 40, 40});
+  const TrackResult w = wall.track(f.view(), EdgeParams{}, 0, Method::PixelFilling, {}, {});
+  EXPECT_EQ(w.status, Status::Lost);
+  EXPECT_FALSE(w.detail.empty());
+  EXPECT_FALSE(w.features.valid());
+}
+
 }  // namespace
 }  // namespace projtrack
