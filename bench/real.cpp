@@ -54,6 +54,7 @@ struct TruthFrame {
 
 struct Clip {
   std::string name;
+  std::string variant;  // empty for the clip as decoded; else how it was changed (see variant())
   int width = 0, height = 0, fps_n = 30, fps_d = 1;
   std::vector<cv::Mat> i420;  // packed planes, (height * 3 / 2) × width
   std::vector<GstClockTime> pts;
@@ -172,6 +173,99 @@ bool same_frames(const Clip& c) {
   for (std::size_t i = 0; i < n; ++i)
     if (std::abs(my + slope * (x[i] - mx) - y[i]) > 1.5) return false;
   return true;
+}
+
+// Fills the buffers each tracker is given (I420 for projtrack, RGB for cvtracker).
+void make_buffers(Clip& c) {
+  const GstClockTime duration = gst_util_uint64_scale(GST_SECOND, c.fps_d, c.fps_n);
+  cv::Mat rgb;
+  for (std::size_t i = 0; i < c.i420.size(); ++i) {
+    c.i420_buffers.push_back(buffer_of(c.i420[i], c.pts[i], duration));
+    cv::cvtColor(c.i420[i], rgb, cv::COLOR_YUV2RGB_I420);
+    c.rgb_buffers.push_back(buffer_of(rgb, c.pts[i], duration));
+  }
+}
+
+// The planes of a packed I420 frame, as 2-D views.
+struct Planes {
+  cv::Mat y, u, v;
+  Planes(cv::Mat& i420, int w, int h)
+      : y(h, w, CV_8UC1, i420.data),
+        u(h / 2, w / 2, CV_8UC1, i420.data + static_cast<std::size_t>(w) * h),
+        v(h / 2, w / 2, CV_8UC1, i420.data + static_cast<std::size_t>(w) * h + (w / 2) * (h / 2)) {}
+};
+
+// The clip as footage we never tuned on would show it: other light, noise, mirrored, faster.
+//   mirror  left and right swapped (the truth too)
+//   dark    a dimmer scene: luma at 55 % of its range above black, chroma at 80 % of its swing
+//   warm    a warm light: luma at 92 %, Cb 10 lower, Cr 12 higher
+//   noise   sensor noise: Gaussian, σ 8 grey levels on luma, 4 on chroma (fixed seed)
+//   fast    every third frame: three times the motion between frames
+std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
+  auto c = std::make_unique<Clip>();
+  c->name = base.name + "-" + how;
+  c->variant = how;
+  c->width = base.width;
+  c->height = base.height;
+  c->fps_n = base.fps_n;
+  c->fps_d = base.fps_d;
+  const int w = base.width, h = base.height;
+  cv::RNG rng(12345);
+  for (std::size_t i = 0; i < base.i420.size(); ++i) {
+    if (how == "fast" && i % 3) continue;
+    cv::Mat f = base.i420[i].clone();
+    Planes p(f, w, h);
+    if (how == "mirror") {
+      for (cv::Mat* m : {&p.y, &p.u, &p.v}) {
+        cv::Mat flipped;
+        cv::flip(*m, flipped, 1);
+        flipped.copyTo(*m);
+      }
+    } else if (how == "dark") {
+      p.y.convertTo(p.y, -1, 0.55, 16 * 0.45);
+      p.u.convertTo(p.u, -1, 0.8, 128 * 0.2);
+      p.v.convertTo(p.v, -1, 0.8, 128 * 0.2);
+    } else if (how == "warm") {
+      p.y.convertTo(p.y, -1, 0.92, 0);
+      p.u.convertTo(p.u, -1, 1, -10);
+      p.v.convertTo(p.v, -1, 1, 12);
+    } else if (how == "noise") {
+      for (auto [m, sigma] : {std::pair{&p.y, 8.0}, {&p.u, 4.0}, {&p.v, 4.0}}) {
+        cv::Mat n(m->size(), CV_16SC1), wide;
+        rng.fill(n, cv::RNG::NORMAL, 0, sigma);
+        m->convertTo(wide, CV_16SC1);
+        wide += n;
+        wide.convertTo(*m, CV_8UC1);
+      }
+    }
+    c->i420.push_back(f);
+    c->pts.push_back(base.pts[i]);
+    if (base.truth.empty()) continue;
+    TruthFrame t = base.truth[i];
+    if (how == "mirror") {
+      t.centroid.x = w - 1 - t.centroid.x;
+      t.box.x = w - t.box.x - t.box.width;
+      t.inner.x = w - 1 - t.inner.x;
+    }
+    c->truth.push_back(t);
+  }
+  make_buffers(*c);
+  return c;
+}
+
+// A variant's truth, in the layout of bench/truth/<clip>.csv, for the report.
+void write_truth(const Clip& c, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  std::FILE* f = std::fopen((dir + "/" + c.name + ".csv").c_str(), "w");
+  if (!f) return;
+  std::fprintf(f, "frame,centroid_x,centroid_y,area,x,y,width,height,inner_x,inner_y,luma_mean\n");
+  for (std::size_t i = 0; i < c.truth.size(); ++i) {
+    const TruthFrame& t = c.truth[i];
+    std::fprintf(f, "%zu,%.2f,%.2f,%.0f,%d,%d,%d,%d,%d,%d,%.2f\n", i, t.centroid.x, t.centroid.y,
+                 t.area, t.box.x, t.box.y, t.box.width, t.box.height, t.inner.x, t.inner.y,
+                 cv::mean(c.luma(static_cast<int>(i)))[0]);
+  }
+  std::fclose(f);
 }
 
 // ---- What a tracker reports on one frame -------------------------------------------------------
@@ -406,9 +500,10 @@ bool only_default = false;  // --only-default: the element's default method and 
 
 void run_all(const Clip& c, Progress& progress) {
   std::vector<std::pair<Tracker, std::string>> ts;  // tracker, group
+  const bool reduced = only_default || !c.variant.empty();
   if (!c.truth.empty()) {
     for (Method m : kAllMethods) {
-      if (only_default && method_name(m) != default_method()) continue;
+      if (reduced && method_name(m) != default_method()) continue;
       const std::string method(method_name(m));
       ts.push_back(
           {projtrack_tracker(c, "projtrack " + method, "method=" + method + " " + seed_props(c)),
@@ -416,7 +511,13 @@ void run_all(const Clip& c, Progress& progress) {
     }
   }
   ts.push_back({projtrack_tracker(c, "projtrack no seed", ""), "projtrack no seed"});
-  if (!c.truth.empty() && !only_default) {
+  if (!c.truth.empty() && !c.variant.empty()) {
+    if (GstElementFactory* f = gst_element_factory_find("cvtracker")) {
+      gst_object_unref(f);
+      ts.push_back({cvtracker_tracker(c, "MOSSE"), "box tracker"});
+    }
+  }
+  if (!c.truth.empty() && !reduced) {
     if (GstElementFactory* f = gst_element_factory_find("cvtracker")) {
       gst_object_unref(f);
       for (const char* a : {"MOSSE", "KCF", "CSRT", "MedianFlow"})
@@ -531,7 +632,8 @@ void write_meta(const std::string& dir, const std::vector<std::unique_ptr<Clip>>
     meta << (k ? "," : "") << "\n    \"" << c.name << "\": {\"frames\": " << c.i420.size()
          << ", \"width\": " << c.width << ", \"height\": " << c.height
          << ", \"fps\": " << static_cast<double>(c.fps_n) / c.fps_d
-         << ", \"truth\": " << (c.truth.empty() ? "false" : "true") << "}";
+         << ", \"truth\": " << (c.truth.empty() ? "false" : "true") << ", \"variant\": \""
+         << c.variant << "\"}";
   }
   meta << "\n  }\n}\n";
 }
@@ -545,7 +647,7 @@ int main(int argc, char** argv) {
   std::string out = "docs/real_footage", truth_dir = "bench/truth";
   std::vector<std::pair<std::string, std::string>> clip_args;
   int max_frames = 0;
-  bool draw = true;
+  bool draw = true, variants = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--out" && i + 1 < argc) {
@@ -554,6 +656,8 @@ int main(int argc, char** argv) {
       truth_dir = argv[++i];
     } else if (a == "--frames" && i + 1 < argc) {
       max_frames = std::atoi(argv[++i]);
+    } else if (a == "--variants") {
+      variants = true;
     } else if (a == "--only-default") {
       only_default = true;
     } else if (a == "--no-draw") {
@@ -565,6 +669,7 @@ int main(int argc, char** argv) {
       std::fprintf(
           stderr,
           "usage: projtrack-real --out DIR [--truth DIR] [--frames N] [--no-draw] [--only-default] "
+          "[--variants] "
           "--clip NAME=FILE...\n");
       return 2;
     }
@@ -597,16 +702,20 @@ int main(int argc, char** argv) {
       }
       c->truth.resize(c->i420.size());
     }
-    const GstClockTime duration = gst_util_uint64_scale(GST_SECOND, c->fps_d, c->fps_n);
-    cv::Mat rgb;
-    for (std::size_t i = 0; i < c->i420.size(); ++i) {
-      c->i420_buffers.push_back(buffer_of(c->i420[i], c->pts[i], duration));
-      cv::cvtColor(c->i420[i], rgb, cv::COLOR_YUV2RGB_I420);
-      c->rgb_buffers.push_back(buffer_of(rgb, c->pts[i], duration));
-    }
+    make_buffers(*c);
     std::fprintf(stderr, "projtrack-real: %s: %zu frames, %dx%d%s\n", name.c_str(), c->i420.size(),
                  c->width, c->height, c->truth.empty() ? ", no truth" : "");
     clips.push_back(std::move(c));
+  }
+  if (variants) {
+    const std::size_t originals = clips.size();
+    for (std::size_t k = 0; k < originals; ++k) {
+      if (clips[k]->truth.empty()) continue;
+      for (const char* how : {"mirror", "dark", "warm", "noise", "fast"}) {
+        clips.push_back(variant(*clips[k], how));
+        write_truth(*clips.back(), out + "/truth");
+      }
+    }
   }
 
   std::filesystem::create_directories(out);
@@ -625,12 +734,15 @@ int main(int argc, char** argv) {
   long steps = 0;
   for (const auto& c : clips) {
     const long n = static_cast<long>(c->i420.size());
-    steps += n * (1 + (draw ? (c->truth.empty() ? 1 : 2) : 0) + (c->truth.empty() ? 0 : 1));
+    const bool extra = c->variant.empty();  // the overlay and 1080p: for the clips as decoded
+    steps += n * (1 + (draw && extra ? (c->truth.empty() ? 1 : 2) : 0) +
+                  (c->truth.empty() || !extra ? 0 : 1));
   }
   {
     Progress progress(steps);
     for (const auto& c : clips) run_all(*c, progress);
     for (const auto& c : clips) {
+      if (!c->variant.empty()) continue;
       if (draw && !c->truth.empty())
         draw_frames(*c, out + "/frames", "seeded", seed_props(*c), progress);
       if (draw) draw_frames(*c, out + "/frames", "no-seed", "", progress);

@@ -64,6 +64,50 @@ void ObjectFinder::count_motion(const MotionDetector::Motion& motion) {
   }
 }
 
+void ObjectFinder::count_foreground(const FinderParams& p) {
+  const ImageView& luma = work_.view().luma;
+  const std::size_t n = static_cast<std::size_t>(luma.width) * luma.height;
+  if (scene_rect_ != work_.rect() || scene_.size() != n) {
+    scene_.assign(n, 0.f);
+    scene_rect_ = work_.rect();
+    scene_seen_ = 0;
+  }
+  const float rate = static_cast<float>(
+      std::max(p.background_rate, 1.0 / (scene_seen_ + 1)));  // the first frames average
+  const bool known = scene_seen_ >= p.background_frames;
+  foreground_.assign(static_cast<std::size_t>(regions_.count()) + 1, 0);
+  for (int y = 0; y < luma.height; ++y) {
+    const std::uint8_t* in = luma.row(y);
+    const std::int32_t* l = regions_.row(y);
+    float* bg = scene_.data() + static_cast<std::size_t>(y) * luma.width;
+    for (int x = 0; x < luma.width; ++x) {
+      if (l[x] && (!known || std::abs(in[x] - bg[x]) > p.background_change)) ++foreground_[l[x]];
+      bg[x] += rate * (in[x] - bg[x]);
+    }
+  }
+  ++scene_seen_;
+}
+
+double ObjectFinder::foreground_share(const Mask& s, int scale, const FinderParams& p) const {
+  if (scene_seen_ < p.background_frames || scene_rect_.empty()) return 1.0;
+  const int fs = std::max(1, work_.scale());
+  const ImageView& luma = work_.view().luma;
+  double in = 0, differ = 0;
+  for (int y = 0; y < s.rect().height; ++y) {
+    for (int x = 0; x < s.rect().width; ++x) {
+      if (!s.row(y)[x]) continue;
+      // The finder's work pixel under this one's centre.
+      const int fx = ((x + s.rect().x) * scale + scale / 2) / fs - scene_rect_.x;
+      const int fy = ((y + s.rect().y) * scale + scale / 2) / fs - scene_rect_.y;
+      if (fx < 0 || fy < 0 || fx >= luma.width || fy >= luma.height) continue;
+      in += 1;
+      const float bg = scene_[static_cast<std::size_t>(fy) * luma.width + fx];
+      differ += std::abs(luma.at(fx, fy) - bg) > p.background_change;
+    }
+  }
+  return in > 0 ? differ / in : 0.0;
+}
+
 template <class Score>
 int ObjectFinder::best_region(Score&& score) {
   stats_.assign(static_cast<std::size_t>(regions_.count()) + 1, {});
@@ -179,6 +223,7 @@ bool ObjectFinder::from_motion(const ColorView& frame, const MotionDetector::Mot
   const double frame_area = static_cast<double>(w) * h;
   regions_.label(candidates_.view(), false);
   count_motion(motion);
+  count_foreground(p);
   // A motion sample stands for step² frame pixels, a work pixel for scale².
   const double per_sample = static_cast<double>(motion.step) * motion.step /
                             (static_cast<double>(work_.scale()) * work_.scale());
@@ -188,7 +233,7 @@ bool ObjectFinder::from_motion(const ColorView& frame, const MotionDetector::Mot
     const double share = moving_[l] * per_sample / size;
     if (size < p.min_area * frame_area || size > p.max_area * frame_area) return -1.0;
     if (b.x == 0 || b.y == 0 || b.right() == w || b.bottom() == h) return -1.0;
-    if (share < p.min_moving) return -1.0;
+    if (share < p.min_moving || foreground_[l] < p.min_foreground * size) return -1.0;
     return share * size / (static_cast<double>(b.width) * b.height);
   });
   if (!label) {
@@ -217,6 +262,7 @@ bool ObjectFinder::from_model(const ColorView& frame, const AppearanceModel& mod
   ops_.dilate(opened_, 1, candidates_);
   regions_.label(candidates_.view(), false);
   count_motion(motion);
+  count_foreground(p);
   const double per_sample =
       static_cast<double>(motion.step) * motion.step / (static_cast<double>(s) * s);
   const double work_area = area / (static_cast<double>(s) * s);
@@ -225,7 +271,8 @@ bool ObjectFinder::from_model(const ColorView& frame, const AppearanceModel& mod
   const int label = best_region([&](int l, const RegionStats& r) {
     const double size = static_cast<double>(r.size);
     if (size < work_area / factor || size > work_area * factor) return -1.0;
-    if (moving_[l] * per_sample / size < p.min_moving) return -1.0;
+    if (moving_[l] * per_sample / size < p.min_moving || foreground_[l] < p.min_foreground * size)
+      return -1.0;
     const Point2d c{r.box.x + r.box.width / 2.0, r.box.y + r.box.height / 2.0};
     return 1.0 - distance(c, near_work) / diagonal;  // nearest first
   });

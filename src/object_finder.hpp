@@ -27,12 +27,23 @@ struct FinderParams {
   double min_moving = 0.02;
   // The finder reads the whole frame at a scale that makes it about this many work pixels.
   double work_pixels = 80000;
+  // The scene's background: the running mean of the frames searched (at this rate a frame, after
+  // `background_frames` frames). A candidate must differ from it (by more than
+  // `background_change` grey levels) on at least `min_foreground` of its pixels: a static region
+  // — a sign a passer-by walked in front of — is the background, whatever moved around it.
+  double background_rate = 1.0 / 16;
+  int background_frames = 8;
+  int background_change = 15;
+  double min_foreground = 0.15;
 };
 
 // Every silhouette it finds is in work coordinates at scale() (see WorkFrame).
 class ObjectFinder {
  public:
   int scale() const { return work_.scale(); }
+  // The share of `s` (work coordinates at `scale`) that differs from the scene's background, as
+  // the last search from motion or by colour learned it; 1 while it is not yet known.
+  double foreground_share(const Mask& s, int scale, const FinderParams& p) const;
   // The colours of the frame's border strip on the last search from a seed or by motion:
   // counts per AppearanceModel colour bin, at scale().
   const std::vector<std::uint32_t>& border_colours() const { return border_counts_; }
@@ -64,6 +75,9 @@ class ObjectFinder {
   void foreground(const FinderParams& p);
   // Moving samples per labelled region, and the frame area a work pixel stands for.
   void count_motion(const MotionDetector::Motion& motion);
+  // Updates the background with the loaded frame; then, per labelled region, its pixels that
+  // differ from the background (all of them while the background is not yet known).
+  void count_foreground(const FinderParams& p);
   // Picks the best labelled region of candidates_ by `score` (higher is better, < 0 refused).
   template <class Score>
   int best_region(Score&& score);
@@ -80,7 +94,10 @@ class ObjectFinder {
   std::vector<std::uint8_t> like_;
   Mask candidates_, opened_;
   RegionLabels regions_;
-  std::vector<std::int64_t> moving_;
+  std::vector<std::int64_t> moving_, foreground_;
+  std::vector<float> scene_;  // the background: running mean luma, at the finder's scale
+  Rect scene_rect_;
+  int scene_seen_ = 0;
   MaskOps ops_;
   WorkFrame work_;
 };

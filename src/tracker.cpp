@@ -54,6 +54,8 @@ Estimator& Tracker::estimator(Method m) {
 void Tracker::accept(const Features& f, double t, int width, int height, const TrackerParams& tp,
                      bool resumed, TrackResult& r) {
   if (!last_good_) {  // a track (re)starts here
+    seeded_ = inner_.has_value() && !resumed;
+    still_ = 0;
     if (resumed && pointer_.started())
       pointer_.resume();
     else
@@ -228,8 +230,20 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
                       ? object_.resume(frame, edges, first_, scale, seed, tp.object, silhouette_)
                       : object_.start(frame, edges, first_, scale, seed, finder_.border_colours(),
                                       tp.object, silhouette_);
-  if (!ok) why = "nothing of the object's colours is left around it";
-  return ok;
+  if (!ok) {
+    why = "nothing of the object's colours is left around it";
+    return false;
+  }
+  // An object found by motion alone must not be the background: a static region that a
+  // passer-by's colours joined is left alone, whatever moved around it.
+  if (!inner_ && !resumed &&
+      finder_.foreground_share(silhouette_, object_.scale(), tp.finder) <
+          tp.finder.min_foreground) {
+    object_.reset();
+    why = "what moved there is the background (a static region): left alone";
+    return false;
+  }
+  return true;
 }
 
 Features Tracker::estimate_on_silhouette(Method m, const Params& params, int width, int height,
@@ -383,6 +397,28 @@ TrackResult Tracker::track_appearance(const ColorView& frame, EdgeSource& edges,
   if (!why.empty()) {
     refuse(std::move(why), tp, r);
     return r;
+  }
+  // An object found without the user's point that the scene's background holds — its silhouette
+  // the same as what the finder saw there while it searched, for `still_frames` frames in a row —
+  // is dropped: a static region that motion around it picked (the original system dropped an
+  // object that stopped moving). One the user pointed at is kept, whatever it is.
+  if (!seeded_ && tp.still_frames > 0) {
+    bool background = finder_.foreground_share(silhouette_, object_.scale(), tp.finder) <
+                      tp.finder.min_foreground;
+    // And it does not move: almost none of its box changed since the last frame.
+    if (background && motion_.update(frame.luma, tp.motion, moved_)) {
+      std::size_t inside = 0;
+      for (const Point2i& q : moved_.points) inside += f.bbox.contains(q);
+      background = static_cast<double>(inside) * moved_.step * moved_.step <
+                   tp.finder.min_moving * f.bbox.width * f.bbox.height;
+    }
+    still_ = background ? still_ + 1 : 0;
+    if (still_ >= tp.still_frames) {
+      still_ = 0;
+      refused_in_a_row_ = tp.patience;  // dropped now
+      refuse("the object is part of the scene's background: a static region", tp, r);
+      return r;
+    }
   }
   object_.accept(silhouette_, tp.object);
   accept(f, t, w, h, tp, false, r);

@@ -115,7 +115,9 @@ class Tracker {
   std::vector<std::uint8_t> barrier_;
   double lost_area_ = 0;  // the object's area and centroid when it was lost
   Point2d lost_centroid_;
-  int searched_ = 0;  // frames searched by colour since the loss
+  int searched_ = 0;     // frames searched by colour since the loss
+  bool seeded_ = false;  // the track started from the user's point or box
+  int still_ = 0;        // frames in a row the object has not moved
 };
 
 }  // namespace projtrack

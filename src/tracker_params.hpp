@@ -61,6 +61,10 @@ struct TrackerParams {
   // After a loss the object is searched by its colours; after this many frames without finding
   // it, its colours are forgotten and Auto acquisition looks for any moving object.
   int forget_after = 150;
+  // An object found without the user's point is dropped after `still_frames` frames in a row
+  // in which its silhouette is the scene's background (FinderParams::min_foreground) and its box
+  // hardly changes (FinderParams::min_moving); 0: never.
+  int still_frames = 4;
 
   bool smoothing = true;  // One Euro filter on x, y and depth
   OneEuroFilter::Params filter;
