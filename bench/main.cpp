@@ -317,6 +317,7 @@ void acquisition(const Options& opt, std::ostream& csv, Progress& progress) {
     for (int k = 0; k < instances; ++k) {
       for (auto [name, strategy] : kStrategies) {
         TrackerParams tp;
+        tp.model = ObjectModelKind::Edges;  // the strategies are the edges model's
         tp.strategy = strategy;
         const auto steps = run_sequence(
             frames, [&](int i) { return seq.spec(i, k); }, tp);

@@ -1,14 +1,17 @@
 #!/usr/bin/python3
-"""projtrack demo: tracks a hand-shaped object in a generated video with known ground truth.
+"""projtrack demo: tracks a hand-shaped object in a generated video with known ground truth,
+or (--clip cup, --clip box) a real held object in one of opencv-doc's clips.
 
 Writes under --out (default out/):
-  demo.webm  the video with projtrack's overlay (draw=true)
+  demo.webm  the video with projtrack's overlay (draw=true); <clip>.webm for a real clip
   demo.csv   one row per frame: projtrack's features next to the true centroid and area
+             (<clip>.csv; the truth of the real clips is bench/truth/'s)
 and prints a summary. Needs the plugin on GST_PLUGIN_PATH (./run demo sets it) and Debian's
-python3-gst-1.0 and python3-numpy.
+python3-gst-1.0 and python3-numpy; the real clips need opencv-doc and gstreamer1.0-libav.
 """
 import argparse
 import csv
+import gzip
 import math
 import os
 import sys
@@ -79,42 +82,14 @@ def truth(mask):
     return xs.mean(), ys.mean(), float(len(xs))
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument('--out', default='out')
-    ap.add_argument('--frames', type=int, default=300)
-    ap.add_argument('--width', type=int, default=640)
-    ap.add_argument('--height', type=int, default=480)
-    ap.add_argument('--method', default='gap-tolerant-filling')
-    ap.add_argument('--extra', default='', help='more projtrack properties, e.g. "grid-size=12"')
-    args = ap.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+TRACKING = {'ok', 'reached-border', 'covers-frame'}
+OPENCV_DOC = '/usr/share/doc/opencv-doc/opencv4/html'
+TRUTH = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'bench', 'truth')
 
-    Gst.init(None)
-    scene = HandScene(args.width, args.height)
-    cx, cy, _ = scene.pose(0)
-    video = os.path.join(args.out, 'demo.webm')
-    pipeline = Gst.parse_launch(
-        f'appsrc name=src is-live=false format=time '
-        f'caps=video/x-raw,format=RGBx,width={args.width},height={args.height},framerate=30/1 ! '
-        f'videoconvert ! projtrack name=tracker draw=true method={args.method} {args.extra} '
-        f'inner-point-x={int(cx)} inner-point-y={int(cy)} ! '
-        f'videoconvert ! vp8enc deadline=1 cpu-used=8 ! webmmux ! filesink location={video}')
-    src = pipeline.get_by_name('src')
+
+def collect(pipeline, truths):
+    """The projtrack messages of a running pipeline until EOS, one row a frame, with the truth."""
     bus = pipeline.get_bus()
-    pipeline.set_state(Gst.State.PLAYING)
-
-    truths = []
-    for i in range(args.frames):
-        m = scene.mask(i)
-        truths.append(truth(m))
-        buf = Gst.Buffer.new_wrapped(scene.frame(m).tobytes())
-        buf.pts = i * Gst.SECOND // 30
-        buf.duration = Gst.SECOND // 30
-        if src.emit('push-buffer', buf) != Gst.FlowReturn.OK:
-            break
-    src.emit('end-of-stream')
-
     rows, error = [], None
     while True:
         msg = bus.timed_pop_filtered(Gst.CLOCK_TIME_NONE, Gst.MessageType.ELEMENT |
@@ -128,40 +103,115 @@ def main():
         if s is None or s.get_name() != 'projtrack':
             continue
         i = len(rows)
-        tx, ty, ta = truths[i]
+        tx, ty, ta = truths[i] if i < len(truths) else (float('nan'),) * 3
         row = {'frame': i, 'timestamp_s': s.get_value('timestamp') / Gst.SECOND,
                'status': s.get_string('status'),
                'processing_ms': s.get_value('processing-time') / 1e6,
                'true_centroid_x': round(tx, 2), 'true_centroid_y': round(ty, 2), 'true_area': ta}
-        if s.has_field('area'):
+        # A lost track's message holds the last accepted features: not a measurement.
+        if row['status'] in TRACKING:
             for f in ['centroid-x', 'centroid-y', 'area', 'x', 'y', 'width', 'height',
                       'inner-point-x', 'inner-point-y', 'iterations']:
                 row[f.replace('-', '_')] = s.get_value(f)
         rows.append(row)
     pipeline.set_state(Gst.State.NULL)
-    if error or not rows:
-        print(f'demo: pipeline error: {error or "no projtrack message arrived"}', file=sys.stderr)
-        return 1
+    return rows, error
 
-    table = os.path.join(args.out, 'demo.csv')
+
+def report(rows, title, video, table):
+    """Writes the CSV, prints the summary; returns the number of frames tracked."""
     with open(table, 'w', newline='') as f:
         w = csv.DictWriter(f, FIELDS)
         w.writeheader()
         w.writerows(rows)
-
     tracked = [r for r in rows if 'area' in r]
     errs = [math.hypot(r['centroid_x'] - r['true_centroid_x'], r['centroid_y'] - r['true_centroid_y'])
             for r in tracked]
     area = [abs(r['area'] / r['true_area'] - 1) for r in tracked]
     ms = sorted(r['processing_ms'] for r in rows)
-    print(f'projtrack demo: {args.method}, {args.width}x{args.height}, {len(rows)} frames')
+    print(title)
     print(f'  tracked        {len(tracked)}/{len(rows)} frames')
     if tracked:
         print(f'  centroid error mean {np.mean(errs):.2f} px, max {max(errs):.2f} px')
         print(f'  area error     mean {100 * np.mean(area):.1f} %, max {100 * max(area):.1f} %')
     print(f'  time per frame median {ms[len(ms) // 2]:.2f} ms (edges + estimate + overlay)')
     print(f'  wrote {video} and {table}')
-    return 0 if len(tracked) == len(rows) else 2
+    return len(tracked)
+
+
+def real_clip(args):
+    """A real held object: opencv-doc's clip, seeded where the truth's first silhouette is
+    deepest, scored against that truth."""
+    path = os.path.join(args.out, args.clip + '.mp4')
+    with gzip.open(os.path.join(OPENCV_DOC, args.clip + '.mp4.gz')) as src, open(path, 'wb') as dst:
+        dst.write(src.read())
+    with open(os.path.join(TRUTH, args.clip + '.csv'), newline='') as f:
+        truth_rows = list(csv.DictReader(f))
+    truths = [(float(r['centroid_x']), float(r['centroid_y']), float(r['area'])) for r in truth_rows]
+    seed = (int(truth_rows[0]['inner_x']), int(truth_rows[0]['inner_y']))
+    video = os.path.join(args.out, args.clip + '.webm')
+    pipeline = Gst.parse_launch(
+        f'filesrc location={path} ! decodebin ! videoconvert ! '
+        f'projtrack name=tracker draw=true method={args.method} {args.extra} '
+        f'inner-point-x={seed[0]} inner-point-y={seed[1]} ! '
+        f'videoconvert ! vp8enc deadline=1 cpu-used=8 ! webmmux ! filesink location={video}')
+    pipeline.set_state(Gst.State.PLAYING)
+    rows, error = collect(pipeline, truths)
+    if error or not rows:
+        print(f'demo: pipeline error: {error or "no projtrack message arrived"}', file=sys.stderr)
+        return 1
+    tracked = report(rows, f'projtrack demo: {args.method}, opencv-doc {args.clip}.mp4, '
+                     f'{len(rows)} frames, seeded at {seed[0]},{seed[1]}',
+                     video, os.path.join(args.out, args.clip + '.csv'))
+    return 0 if tracked else 2
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument('--clip', choices=['cup', 'box'],
+                    help="a real clip of opencv-doc's instead of the generated video")
+    ap.add_argument('--out', default='out')
+    ap.add_argument('--frames', type=int, default=300)
+    ap.add_argument('--width', type=int, default=640)
+    ap.add_argument('--height', type=int, default=480)
+    ap.add_argument('--method', default='gap-tolerant-filling')
+    ap.add_argument('--extra', default='', help='more projtrack properties, e.g. "grid-size=12"')
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+
+    Gst.init(None)
+    if args.clip:
+        return real_clip(args)
+    scene = HandScene(args.width, args.height)
+    cx, cy, _ = scene.pose(0)
+    video = os.path.join(args.out, 'demo.webm')
+    pipeline = Gst.parse_launch(
+        f'appsrc name=src is-live=false format=time '
+        f'caps=video/x-raw,format=RGBx,width={args.width},height={args.height},framerate=30/1 ! '
+        f'videoconvert ! projtrack name=tracker draw=true method={args.method} {args.extra} '
+        f'inner-point-x={int(cx)} inner-point-y={int(cy)} ! '
+        f'videoconvert ! vp8enc deadline=1 cpu-used=8 ! webmmux ! filesink location={video}')
+    src = pipeline.get_by_name('src')
+    pipeline.set_state(Gst.State.PLAYING)
+
+    truths = []
+    for i in range(args.frames):
+        m = scene.mask(i)
+        truths.append(truth(m))
+        buf = Gst.Buffer.new_wrapped(scene.frame(m).tobytes())
+        buf.pts = i * Gst.SECOND // 30
+        buf.duration = Gst.SECOND // 30
+        if src.emit('push-buffer', buf) != Gst.FlowReturn.OK:
+            break
+    src.emit('end-of-stream')
+
+    rows, error = collect(pipeline, truths)
+    if error or not rows:
+        print(f'demo: pipeline error: {error or "no projtrack message arrived"}', file=sys.stderr)
+        return 1
+    tracked = report(rows, f'projtrack demo: {args.method}, {args.width}x{args.height}, '
+                     f'{len(rows)} frames', video, os.path.join(args.out, 'demo.csv'))
+    return 0 if tracked == len(rows) else 2
 
 
 if __name__ == '__main__':
