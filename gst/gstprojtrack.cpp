@@ -4,10 +4,15 @@
  *
  * Tracks one object in video from its edges and one point inside it (the *inner point*), with the
  * estimators of Quesada & León, "Filling-Based Techniques Applied to Object Projection Feature
- * Estimation", or with ours beyond the paper, gap-tolerant filling (the default: a grid fill whose
- * lines do not cross breaks in the contour): on every buffer it computes the edge image, runs the
- * chosen estimator from the inner point and reports the object's centroid, area (px²) and
- * bounding box, then moves the inner point for the next frame.
+ * Estimation", or with ours beyond the paper, gap-tolerant filling (the default method): on every
+ * buffer it reports the object's centroid, area (px²) and bounding box.
+ *
+ * With `object-model=appearance` (the default) it finds the whole object's silhouette on every
+ * frame — from the object's colours against its surroundings' (chroma is read from the frame's
+ * own planes), its edges and its last silhouette — so that a real held object is tracked through
+ * its prints and highlights, without the hand that holds it, and the estimator runs on that
+ * silhouette's outline. `object-model=edges` is the paper's tracker alone: the estimator on the
+ * edge image from the inner point.
  *
  * While tracking, every buffer carries a #GstVideoRegionOfInterestMeta of type `object` (the
  * bounding box) with a `projtrack` parameter structure holding the features, and the element
@@ -26,8 +31,8 @@
  * draws what the estimator did: rays and hits, selected blocks, filled pixels or grid lines, the
  * bounding box, the centroid and the inner point.
  *
- * Luma formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444) are read in place; packed RGB formats
- * are converted to gray internally. The element works in place; without `draw` it maps frames
+ * YUV formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444) are read in place, luma and chroma;
+ * packed RGB formats are converted internally. The element works in place; without `draw` it maps frames
  * read-only and never copies them.
  *
  * ## Example launch lines
