@@ -195,6 +195,8 @@ std::string projtrack_launch(const std::string& method, const Clip& c) {
 }
 
 std::string kDefaultMethod;  // the element's own default, read from its property
+// The element with every property at its default (the appearance model): what users run.
+const std::string kElementDefault = "projtrack element default";
 
 std::FILE* csv = nullptr;
 
@@ -249,12 +251,18 @@ void compare_with_peers(Clip& clip, int rounds, int batch, bool have_cvtracker) 
   harnesses.push_back(std::make_unique<Harness>("identity", caps_of("I420", clip)));
   cs.emplace_back("harness alone (identity)",
                   [h = harnesses.back().get(), &clip](int i) { h->run(clip.i420[i]); });
+  // Each method on the edges alone (object-model=edges: the estimator's own job, which is the
+  // stock-OpenCV peer's too), and the element as users run it (the appearance model).
   for (const MethodInfo& m : kMethods) {
-    harnesses.push_back(
-        std::make_unique<Harness>(projtrack_launch(m.nick, clip), caps_of("I420", clip)));
+    harnesses.push_back(std::make_unique<Harness>(
+        projtrack_launch(m.nick, clip) + " object-model=edges", caps_of("I420", clip)));
     Harness* h = harnesses.back().get();
     cs.push_back({std::string("projtrack ") + m.nick, [h, &clip](int i) { h->run(clip.i420[i]); }});
   }
+  harnesses.push_back(
+      std::make_unique<Harness>(projtrack_launch(kDefaultMethod, clip), caps_of("I420", clip)));
+  cs.push_back(
+      {kElementDefault, [h = harnesses.back().get(), &clip](int i) { h->run(clip.i420[i]); }});
   OpenCvFloodFill flood;
   cv::Mat edges;
   cs.push_back({"cv::Canny + cv::floodFill", [&](int i) {
@@ -293,6 +301,8 @@ void compare_with_peers(Clip& clip, int rounds, int batch, bool have_cvtracker) 
     ratio("cv::Canny + cv::floodFill", us);
     ratio("cvtracker MOSSE", us);
   }
+  ratio(kElementDefault, "frame copy");
+  ratio("cvtracker MOSSE", kElementDefault);
   if (clip.object_share > 0) row("clip", &clip, "object", "share_of_frame", clip.object_share);
   row("clip", &clip, "start box", "share_of_frame",
       static_cast<double>(clip.first_box.width) * clip.first_box.height /

@@ -21,6 +21,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 COPY, HARNESS = "frame copy", "harness alone (identity)"
 PEER_CV, PEER_MOSSE = "cv::Canny + cv::floodFill", "cvtracker MOSSE"
+ELEMENT = "projtrack element default"
 BLUR, CV_BLUR, CANNY, CV_CANNY = "projtrack box blur", "cv::blur", "projtrack Canny", "cv::Canny"
 MISSING = "not measured"
 
@@ -96,7 +97,8 @@ def megapixels(res):
 def per_frame_table(rows, methods, clip, res, default):
     out = ["| contender | per frame (median) | × frame copy | Canny + floodFill ÷ it | MOSSE ÷ it |",
            "|---|---|---|---|---|"]
-    for what in [COPY, HARNESS] + [f"projtrack {m}" for m in methods] + [PEER_CV, PEER_MOSSE]:
+    for what in [COPY, HARNESS, ELEMENT] + [f"projtrack {m}" for m in methods] + [PEER_CV,
+                                                                                PEER_MOSSE]:
         us = value(rows, "per_frame", clip, res, what, "median_us")
         if us is None:
             continue
@@ -193,17 +195,23 @@ def speed_phrase(ratios):
 def targets(rows, meta, default, methods):
     """The six targets: [(number, target, measured, verdict)]."""
     d = f"projtrack {default}"
-    t1 = value(rows, "ratio", "generated", "1920x1080", f"{d} / {COPY}", "median")
+    # Targets 1 and 3: the element as users run it (the appearance model); target 2, the
+    # estimator's own job on the edges, which is what Canny + floodFill does.
+    e = ELEMENT if value(rows, "ratio", "generated", "1920x1080", f"{ELEMENT} / {COPY}",
+                         "median") is not None else d
+    t1 = value(rows, "ratio", "generated", "1920x1080", f"{e} / {COPY}", "median")
     t2 = value(rows, "ratio", "generated", "1920x1080", f"{PEER_CV} / {d}", "median")
-    t3 = value(rows, "ratio", "generated", "640x480", f"{PEER_MOSSE} / {d}", "median")
+    t3 = value(rows, "ratio", "generated", "640x480", f"{PEER_MOSSE} / {e}", "median")
     share = value(rows, "clip", "generated", "1920x1080", "object", "share_of_frame")
     out = [
-        (1, f"default method ({default}), 1920×1080 I420, object {fmt_share(share)} of the "
-            f"frame: element ≤ {T1_COPIES}× a frame copy", fmt_x(t1) if t1 is not None else MISSING,
+        (1, f"the element with its defaults (the appearance model, {default}), 1920×1080 I420, "
+            f"object {fmt_share(share)} of the frame: ≤ {T1_COPIES}× a frame copy", fmt_x(t1) if t1 is not None else MISSING,
          verdict([t1], t1 is not None and t1 <= T1_COPIES)),
-        (2, f"≥ {T2_CANNY_FLOOD}× faster than Canny over the frame + `cv::floodFill`, 1080p",
+        (2, f"the estimator's own job ({default} on the edges, `object-model=edges`): "
+            f"≥ {T2_CANNY_FLOOD}× faster than Canny over the frame + `cv::floodFill`, 1080p",
          fmt_x(t2) if t2 is not None else MISSING, verdict([t2], t2 is not None and t2 >= T2_CANNY_FLOOD)),
-        (3, f"≥ {T3_MOSSE}× faster than `cvtracker` MOSSE (given RGB), 640×480",
+        (3, f"the element with its defaults ≥ {T3_MOSSE}× faster than `cvtracker` MOSSE (given RGB), "
+            f"640×480",
          fmt_x(t3) if t3 is not None else f"{MISSING}: cvtracker missing (gstreamer1.0-opencv)?",
          verdict([t3], t3 is not None and t3 >= T3_MOSSE)),
     ]
@@ -317,7 +325,10 @@ def main():
               + ", no blur) over the whole frame and a 4-connected `cv::floodFill` from the true "
               "centroid with `cv::moments` for the centroid. `cvtracker` (gst-plugins-bad) runs "
               "MOSSE from the object's true box on the first frame, on RGB frames converted "
-              "beforehand.\n")
+              "beforehand. `projtrack element default` is the element as users run it (the "
+              "appearance model: the whole object's silhouette, the estimator on its outline); "
+              "the `projtrack <method>` rows run each estimator on the edges alone "
+              "(`object-model=edges`), the same job as the stock-OpenCV peer's.\n")
     for clip in ["generated", "real"]:
         for res in ["640x480", "1920x1080"]:
             if value(rows, "per_frame", clip, res, COPY, "median_us") is None:

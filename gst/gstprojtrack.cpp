@@ -32,7 +32,7 @@
  * bounding box, the centroid and the inner point.
  *
  * YUV formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444) are read in place, luma and chroma;
- * packed RGB formats are converted internally. The element works in place; without `draw` it maps frames
+ * packed RGB is converted internally. The element works in place; without `draw` it maps frames
  * read-only and never copies them.
  *
  * ## Example launch lines

@@ -200,6 +200,7 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
     found = finder_.from_seed(frame, seed, tp.finder, first_, why);
     if (!found) why = "at the frame centre: " + why;
   } else {  // Auto: an object lost before by its colours; else whatever moves
+    moved_before_.swap(moved_.points);  // the last frame's changes, for the check below
     if (!motion_.update(frame.luma, tp.motion, moved_)) {
       why = "waiting for a second frame to compare";
       return false;
@@ -222,6 +223,19 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
       resumed = found;
     } else {
       found = finder_.from_motion(frame, moved_, tp.finder, first_, seed, why);
+      // It moved on the last frame too: a passer-by that crossed a static region for one frame
+      // does not make that region an object.
+      if (found) {
+        const int s = finder_.scale();
+        const Rect box = to_frame(moments(first_).bbox, s, w, h);
+        std::size_t inside = 0;
+        for (const Point2i& q : moved_before_) inside += box.contains(q);
+        if (static_cast<double>(inside) * moved_.step * moved_.step <
+            0.5 * tp.finder.min_moving * box.width * box.height) {
+          found = false;
+          why = "what moves there did not move on the last frame: waiting";
+        }
+      }
     }
   }
   if (!found) return false;
@@ -293,7 +307,11 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
       }
     }
     Point2i start;
-    if (k == 0 && inner_ && pieces_.piece_at({work_of(inner_->x), work_of(inner_->y)}) == 0) {
+    // Rays see what is visible from one point: from the piece's deepest point they see most of
+    // it, and the mean of their hits is least pulled toward a near side.
+    const bool rays = method_info(m).family == Family::Rays;
+    if (!rays && k == 0 && inner_ &&
+        pieces_.piece_at({work_of(inner_->x), work_of(inner_->y)}) == 0) {
       start = *inner_;
     } else {
       const Point2i deep = pieces_.deepest(k);
