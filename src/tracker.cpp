@@ -307,11 +307,7 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
       }
     }
     Point2i start;
-    // Rays see what is visible from one point: from the piece's deepest point they see most of
-    // it, and the mean of their hits is least pulled toward a near side.
-    const bool rays = method_info(m).family == Family::Rays;
-    if (!rays && k == 0 && inner_ &&
-        pieces_.piece_at({work_of(inner_->x), work_of(inner_->y)}) == 0) {
+    if (k == 0 && inner_ && pieces_.piece_at({work_of(inner_->x), work_of(inner_->y)}) == 0) {
       start = *inner_;
     } else {
       const Point2i deep = pieces_.deepest(k);
