@@ -25,14 +25,18 @@
  * pointer: `position-x`, `position-y` in [-1, 1] and a relative `depth` (smoothed by a One Euro
  * filter), and a quick push toward the camera posts `gesture=push`.
  *
- * An inner point can also be given: the `inner-point-x`/`inner-point-y` properties, or a click:
- * a left mouse-button press arriving from downstream (a click in the window of `autovideosink`)
- * starts tracking at the clicked pixel; a right click stops it. With `draw=true` the element
- * draws what the estimator did: rays and hits, selected blocks, filled pixels or grid lines, the
- * bounding box, the centroid and the inner point.
+ * An inner point or a box can also be given: the `inner-point-x`/`inner-point-y` and
+ * `start-box` properties, the `track-point`, `track-box` and `reset` action signals (one call, no
+ * race), or a click: a left mouse-button press arriving from downstream (a click in the window of
+ * `autovideosink`) starts tracking at the clicked pixel; a right click stops it.
+ * `current-inner-point-x`/`-y` say where the tracker is. `updates` chooses which frames post a
+ * message (every frame, on a change, none); conflicting settings are posted as an element warning
+ * and `status=invalid-parameters` on the first frame. With `draw=true` the element draws the
+ * status and why, x, y and depth, the object's outline and what the estimator did.
  *
  * YUV formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444) are read in place, luma and chroma;
- * packed RGB is converted internally. The element works in place; without `draw` it maps frames
+ * YUY2 and UYVY have their chroma read in place and their luma gathered once; packed RGB is
+ * converted internally. The element works in place; without `draw` it maps frames
  * read-only and never copies them.
  *
  * ## Example launch lines
@@ -41,9 +45,11 @@
  * projtrack inner-point-x=160 inner-point-y=120 ! fakesink
  * ]| Tracks videotestsrc's ball and prints a `projtrack` message per frame.
  * |[
- * gst-launch-1.0 -m v4l2src ! videoconvert ! projtrack draw=true ! videoconvert ! autovideosink
+ * gst-launch-1.0 -m v4l2src ! videoconvert ! projtrack draw=true updates=on-change ! videoconvert !
+ * autovideosink
  * ]| Wave an evenly coloured object: it is found, tracked and, when lost, found again; clicking
- * on an object tracks that one. The overlay shows the grid fill.
+ * on an object tracks that one. The overlay says what is tracked, or why not; a message is
+ * posted only when that changes.
  * |[
  * gst-launch-1.0 filesrc location=clip.mp4 ! decodebin ! videoconvert ! projtrack
  * method=pixel-filling draw=true inner-point-x=320 inner-point-y=240 ! videoconvert ! autovideosink

@@ -2,7 +2,7 @@
 """Runs the examples and the demo as a user would, and checks what they print and write.
 
     test_examples.py c BINARY | python SCRIPT | roi SCRIPT | demo SCRIPT OUTDIR |
-                     cursor SCRIPT OUTDIR | pointer SCRIPT
+                     cursor SCRIPT OUTDIR | pointer SCRIPT | recipes CURSOR_SCRIPT OUTDIR
 """
 import csv
 import os
@@ -115,6 +115,33 @@ def check_pointer(script):
     assert out.count('SYN_REPORT') == len(xs) + 2
 
 
+
+def check_recipes(cursor_script, out_dir):
+    """The README's recipes, with videotestsrc where they use a camera: record the overlay to a
+    WebM file; run cursor3d.py on a file for a CSV of every frame."""
+    os.makedirs(out_dir, exist_ok=True)
+    tracked = os.path.join(out_dir, 'tracked.webm')
+    subprocess.run(['gst-launch-1.0', '-q', '-e', 'videotestsrc', 'pattern=ball', 'num-buffers=45',
+                    '!', 'video/x-raw,width=640,height=480', '!', 'videoconvert', '!', 'projtrack',
+                    'draw=true', '!', 'videoconvert', '!', 'vp8enc', 'deadline=1', '!', 'webmmux',
+                    '!', 'filesink', f'location={tracked}'], check=True, timeout=120)
+    assert os.path.getsize(tracked) > 5000, os.path.getsize(tracked)
+    # A clip without the overlay (the overlay's changing text is motion of its own).
+    clip = os.path.join(out_dir, 'clip.webm')
+    subprocess.run(['gst-launch-1.0', '-q', '-e', 'videotestsrc', 'pattern=ball', 'num-buffers=45',
+                    '!', 'video/x-raw,width=640,height=480', '!', 'videoconvert', '!', 'vp8enc',
+                    'deadline=1', '!', 'webmmux', '!', 'filesink', f'location={clip}'],
+                   check=True, timeout=120)
+    table = os.path.join(out_dir, 'clip.csv')
+    subprocess.run([cursor_script, '--file', clip, '--csv', table,
+                    '--out', os.path.join(out_dir, 'clip.png')], check=True, timeout=120,
+                   capture_output=True)
+    with open(table) as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 45, len(rows)  # every frame of the file
+    assert sum(r['status'] == 'ok' and r['x'] != '' for r in rows) > 30, rows
+
+
 kind = sys.argv[1]
 if kind in ('c', 'python'):
     check_feature_lines([sys.argv[2]])
@@ -124,6 +151,8 @@ elif kind == 'roi':
     check_roi(sys.argv[2])
 elif kind == 'pointer':
     check_pointer(sys.argv[2])
+elif kind == 'recipes':
+    check_recipes(sys.argv[2], sys.argv[3])
 elif kind == 'demo':
     check_demo(sys.argv[2], sys.argv[3])
 elif kind == 'cursor':

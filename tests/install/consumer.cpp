@@ -2,10 +2,9 @@
 //   c++ -std=c++17 consumer.cpp $(pkg-config --cflags --libs projtrack)
 // It tracks a drawn disc moving right with the library's Tracker and measures it with one
 // estimator, and fails (exit 1) unless both find it where it is.
-#include <projtrack/projtrack.hpp>
-
 #include <cmath>
 #include <cstdio>
+#include <projtrack/projtrack.hpp>
 #include <vector>
 
 int main() {
@@ -13,8 +12,7 @@ int main() {
   std::vector<unsigned char> frame(static_cast<size_t>(w) * h);
   const auto draw = [&](int cx, int cy) {
     for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        frame[y * w + x] = std::hypot(x - cx, y - cy) <= r ? 220 : 40;
+      for (int x = 0; x < w; ++x) frame[y * w + x] = std::hypot(x - cx, y - cy) <= r ? 220 : 40;
   };
   const projtrack::ImageView gray(frame.data(), w, h, w);
 
@@ -34,8 +32,8 @@ int main() {
     draw(cx, 120);
     const projtrack::TrackResult t = tracker.track(gray, projtrack::EdgeParams{}, i / 30.0,
                                                    projtrack::Method::GapTolerantFilling, {}, tp);
-    std::printf("frame %d: %s centroid %.1f depth %.2f\n", i, projtrack::status_name(t.status).data(),
-                t.features.centroid.x, t.pose.depth);
+    std::printf("frame %d: %s centroid %.1f depth %.2f\n", i,
+                projtrack::status_name(t.status).data(), t.features.centroid.x, t.pose.depth);
     ok = ok && projtrack::has_features(t.status) && std::abs(t.features.centroid.x - cx) < 2;
   }
   std::printf(ok ? "consumer: ok\n" : "consumer: FAILED\n");
