@@ -115,49 +115,33 @@ def live_line(s):
     return f'{status}: {s.get_string("detail") or ""}'
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def add_source_arguments(ap):
+    """--camera (the default), --file or --generated, and --frames: shared with
+    pointer_uinput.py."""
     src = ap.add_mutually_exclusive_group()
     src.add_argument('--camera', default='/dev/video0', help='V4L2 device (default)')
     src.add_argument('--file', help='a video file')
     src.add_argument('--generated', action='store_true', help='a generated hand')
     ap.add_argument('--frames', type=int, default=120, help='with --generated')
-    ap.add_argument('--out', default='out/trajectory.png', help='the plot, for files')
-    ap.add_argument('--csv', default='out/trajectory.csv', help='every frame, for files')
-    ap.add_argument('--live', action='store_true',
-                    help='print the live line even when the output is not a terminal')
-    args = ap.parse_args()
-    camera = not (args.file or args.generated)
-    if camera and (why := camera_problem(args.camera)):
-        print(f'cursor3d: {why}: plug one in, or use --file clip.mp4 or --generated',
-              file=sys.stderr)
-        return 2
-    Gst.init(None)
-    live = args.live or sys.stdout.isatty()
 
-    tracker = 'projtrack name=tracker acquisition=auto'
-    feed = None
+
+def source_pipeline(args, tracker, camera_tail):
+    """(pipeline, feed): the source the arguments name into `tracker` (a projtrack element and
+    what follows it: `camera_tail` after a camera, fakesink after a file or generated frames);
+    `feed` pushes the generated frames (None for the others)."""
     if args.generated:
-        pipeline, feed = generated_source(tracker + ' ! fakesink', args.frames)
-    elif args.file:
-        pipeline = Gst.parse_launch(f'filesrc location="{args.file}" ! decodebin ! videoconvert ! '
-                                    f'{tracker} ! fakesink')
-    else:  # the picture with the overlay in a window, when there is a display to open one on
-        sink = 'videoconvert ! autovideosink' if has_display() else 'fakesink'
-        pipeline = Gst.parse_launch(f'v4l2src device={args.camera} ! videoconvert ! {tracker} '
-                                    f'draw=true ! {sink}')
-    samples, pushes, state = [], [], {}
-    loop = GLib.MainLoop()
-    writer = None
-    if not camera:
-        os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
-        csv_file = open(args.csv, 'w', newline='')
-        writer = csv.DictWriter(csv_file, CSV_FIELDS)
-        writer.writeheader()
+        return generated_source(f'{tracker} ! fakesink', args.frames)
+    if args.file:
+        return Gst.parse_launch(f'filesrc location="{args.file}" ! decodebin ! videoconvert ! '
+                                f'{tracker} ! fakesink'), None
+    return Gst.parse_launch(f'v4l2src device={args.camera} ! videoconvert ! {tracker} '
+                            f'{camera_tail}'), None
 
-    def say(text):
-        """An event on its own line (after the live line, if one is shown)."""
-        print(('\r\033[K' if live else '') + text, flush=True)
+
+def run_pipeline(pipeline, feed, on_projtrack):
+    """Plays `pipeline` until its end, an error or Ctrl-C, calling on_projtrack(structure) for
+    every projtrack message."""
+    loop = GLib.MainLoop()
 
     def on_message(bus, msg):
         if msg.type == Gst.MessageType.ERROR:
@@ -166,26 +150,7 @@ def main():
         elif msg.type == Gst.MessageType.EOS:
             loop.quit()
         elif msg.type == Gst.MessageType.ELEMENT and msg.get_structure().get_name() == 'projtrack':
-            s = msg.get_structure()
-            t = s.get_value('timestamp') / Gst.SECOND
-            status = s.get_string('status')
-            if writer:
-                writer.writerow(row(s))
-            # A lost message holds the last features: only a tracking status is a measurement.
-            if status in TRACKING:
-                samples.append((t, s.get_value('position-x'), s.get_value('position-y'),
-                                s.get_value('depth')))
-            if s.has_field('acquired'):
-                say(f'{t:7.2f}s  acquired an object')
-            if status == 'lost' and not state.get('lost'):
-                say(f'{t:7.2f}s  lost: {s.get_string("detail")}')
-            state['lost'] = status == 'lost'
-            if s.has_field('gesture') and status in TRACKING:
-                pushes.append(t)
-                say(f'{t:7.2f}s  {s.get_string("gesture")}  at x {s.get_value("position-x"):+.2f} '
-                    f'y {s.get_value("position-y"):+.2f} depth {s.get_value("depth"):.2f}')
-            if live:
-                print(f'\r\033[K{t:7.2f}s  {live_line(s)}', end='', flush=True)
+            on_projtrack(msg.get_structure())
         return True
 
     bus = pipeline.get_bus()
@@ -199,6 +164,62 @@ def main():
     except KeyboardInterrupt:
         pass
     pipeline.set_state(Gst.State.NULL)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    add_source_arguments(ap)
+    ap.add_argument('--out', default='out/trajectory.png', help='the plot, for files')
+    ap.add_argument('--csv', default='out/trajectory.csv', help='every frame, for files')
+    ap.add_argument('--live', action='store_true',
+                    help='print the live line even when the output is not a terminal')
+    args = ap.parse_args()
+    camera = not (args.file or args.generated)
+    if camera and (why := camera_problem(args.camera)):
+        print(f'cursor3d: {why}: plug one in, or use --file clip.mp4 or --generated',
+              file=sys.stderr)
+        return 2
+    Gst.init(None)
+    live = args.live or sys.stdout.isatty()
+
+    # A camera's picture with the overlay in a window, when there is a display to open one on.
+    sink = 'videoconvert ! autovideosink' if has_display() else 'fakesink'
+    pipeline, feed = source_pipeline(args, 'projtrack name=tracker acquisition=auto',
+                                     f'draw=true ! {sink}')
+    samples, pushes, state = [], [], {}
+    writer = None
+    if not camera:
+        os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
+        csv_file = open(args.csv, 'w', newline='')
+        writer = csv.DictWriter(csv_file, CSV_FIELDS)
+        writer.writeheader()
+
+    def say(text):
+        """An event on its own line (after the live line, if one is shown)."""
+        print(('\r\033[K' if live else '') + text, flush=True)
+
+    def on_projtrack(s):
+        t = s.get_value('timestamp') / Gst.SECOND
+        status = s.get_string('status')
+        if writer:
+            writer.writerow(row(s))
+        # A lost message holds the last features: only a tracking status is a measurement.
+        if status in TRACKING:
+            samples.append((t, s.get_value('position-x'), s.get_value('position-y'),
+                            s.get_value('depth')))
+        if s.has_field('acquired'):
+            say(f'{t:7.2f}s  acquired an object')
+        if status == 'lost' and not state.get('lost'):
+            say(f'{t:7.2f}s  lost: {s.get_string("detail")}')
+        state['lost'] = status == 'lost'
+        if s.has_field('gesture') and status in TRACKING:
+            pushes.append(t)
+            say(f'{t:7.2f}s  {s.get_string("gesture")}  at x {s.get_value("position-x"):+.2f} '
+                f'y {s.get_value("position-y"):+.2f} depth {s.get_value("depth"):.2f}')
+        if live:
+            print(f'\r\033[K{t:7.2f}s  {live_line(s)}', end='', flush=True)
+
+    run_pipeline(pipeline, feed, on_projtrack)
     if live:
         print()
     if writer:

@@ -17,11 +17,12 @@ import sys
 import gi
 
 gi.require_version('Gst', '1.0')
-from gi.repository import GLib, Gst  # noqa: E402
+from gi.repository import Gst  # noqa: E402
 from evdev import AbsInfo, UInput, ecodes  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cursor3d import TRACKING, camera_problem, generated_source  # noqa: E402
+from cursor3d import (TRACKING, add_source_arguments, camera_problem,  # noqa: E402
+                      run_pipeline, source_pipeline)
 
 AXIS_MAX = 65535  # the device's absolute range on both axes; the desktop maps it to the screen
 
@@ -55,11 +56,7 @@ def to_axis(position):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    src = ap.add_mutually_exclusive_group()
-    src.add_argument('--camera', default='/dev/video0', help='V4L2 device (default)')
-    src.add_argument('--file', help='a video file')
-    src.add_argument('--generated', action='store_true', help='a generated hand')
-    ap.add_argument('--frames', type=int, default=120, help='with --generated')
+    add_source_arguments(ap)
     ap.add_argument('--dry-run', action='store_true', help='print the events, open no device')
     ap.add_argument('--mirror', action=argparse.BooleanOptionalAction, default=None,
                     help='move left when the object moves right in the picture (default: for '
@@ -71,57 +68,30 @@ def main():
         return 2
     mirror = camera if args.mirror is None else args.mirror
     Gst.init(None)
-    tracker = 'projtrack name=tracker updates=every-frame ! fakesink'
-    feed = None
-    if args.generated:
-        pipeline, feed = generated_source(tracker, args.frames)
-    elif args.file:
-        pipeline = Gst.parse_launch(f'filesrc location="{args.file}" ! decodebin ! videoconvert ! '
-                                    + tracker)
-    else:
-        pipeline = Gst.parse_launch(f'v4l2src device={args.camera} ! videoconvert ! ' + tracker)
+    pipeline, feed = source_pipeline(args, 'projtrack name=tracker', '! fakesink')
     try:
         device = open_device(args.dry_run)
     except (OSError, PermissionError) as e:
         print(f'pointer_uinput: cannot create a uinput device ({e}): run as root, or join the '
               'uinput group; --dry-run prints the events instead', file=sys.stderr)
         return 2
-    loop = GLib.MainLoop()
     moved = [0]
 
-    def on_message(bus, msg):
-        if msg.type == Gst.MessageType.ERROR:
-            print('error:', msg.parse_error()[0].message, file=sys.stderr)
-            loop.quit()
-        elif msg.type == Gst.MessageType.EOS:
-            loop.quit()
-        elif msg.type == Gst.MessageType.ELEMENT and msg.get_structure().get_name() == 'projtrack':
-            s = msg.get_structure()
-            if s.get_string('status') not in TRACKING:  # lost, searching: the pointer stays
-                return True
-            x = s.get_value('position-x')
-            device.write(ecodes.EV_ABS, ecodes.ABS_X, to_axis(-x if mirror else x))
-            device.write(ecodes.EV_ABS, ecodes.ABS_Y, to_axis(s.get_value('position-y')))
+    def on_projtrack(s):
+        if s.get_string('status') not in TRACKING:  # lost, searching: the pointer stays
+            return
+        x = s.get_value('position-x')
+        device.write(ecodes.EV_ABS, ecodes.ABS_X, to_axis(-x if mirror else x))
+        device.write(ecodes.EV_ABS, ecodes.ABS_Y, to_axis(s.get_value('position-y')))
+        device.syn()
+        moved[0] += 1
+        if s.get_string('gesture') == 'push':  # a click: press and release
+            device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, 1)
             device.syn()
-            moved[0] += 1
-            if s.get_string('gesture') == 'push':  # a click: press and release
-                device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, 1)
-                device.syn()
-                device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, 0)
-                device.syn()
-        return True
+            device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, 0)
+            device.syn()
 
-    bus = pipeline.get_bus()
-    bus.add_signal_watch()
-    bus.connect('message', on_message)
-    pipeline.set_state(Gst.State.PLAYING)
-    if feed:
-        GLib.idle_add(lambda: feed() and False)
-    try:
-        loop.run()
-    except KeyboardInterrupt:
-        pass
-    pipeline.set_state(Gst.State.NULL)
+    run_pipeline(pipeline, feed, on_projtrack)
     device.close()
     print(f'pointer_uinput: moved the pointer on {moved[0]} frames', file=sys.stderr)
     return 0 if moved[0] else 1
