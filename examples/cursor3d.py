@@ -3,14 +3,18 @@
 is, depth from how big it looks, and a quick push toward the camera as a click.
 
     cursor3d.py                      # the camera (/dev/video0), in a window: wave an object
-    cursor3d.py --file clip.mp4      # a file: writes the trajectory plot (--out)
+    cursor3d.py --file clip.mp4      # a file: writes the trajectory CSV and plot (--csv, --out)
     cursor3d.py --generated          # a generated hand that moves and pushes once
 
-Prints one line per gesture and, for files and generated input, plots the trajectory (x, y and
-depth over time, pushes marked) to --out. Needs the plugin on GST_PLUGIN_PATH and Debian's
-python3-gst-1.0, python3-numpy and python3-matplotlib.
+Prints a live line with x, y, depth and the status (rewritten in place on a terminal; --live
+forces it), one line per event (acquired, lost and why, push), and, for files and generated
+input, writes every frame to a CSV (--csv) and plots the trajectory (x, y and depth over time,
+pushes marked) to --out. Without a camera it says so and exits; without a display the camera's
+picture is not shown. Needs the plugin on GST_PLUGIN_PATH and Debian's python3-gst-1.0,
+python3-numpy and python3-matplotlib.
 """
 import argparse
+import csv
 import math
 import os
 import sys
@@ -72,28 +76,71 @@ def plot(samples, pushes, path):
     fig.savefig(path, dpi=90)
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+TRACKING = ('ok', 'reached-border', 'covers-frame')  # statuses whose features are measured
+CSV_FIELDS = ['time', 'status', 'x', 'y', 'depth', 'centroid_x', 'centroid_y', 'area', 'gesture',
+              'detail']
+
+
+def camera_problem(device):
+    """Why `device` cannot be a camera, or None: checked before GStreamer opens it."""
+    if not os.path.exists(device):
+        return f'no camera at {device}'
+    if not os.access(device, os.R_OK | os.W_OK):
+        return f'{device} is not readable and writable by this user (the video group?)'
+    return None
+
+
+def has_display():
+    return bool(os.environ.get('DISPLAY') or os.environ.get('WAYLAND_DISPLAY'))
+
+
+def row(s):
+    """One CSV row of one projtrack message: measured features only while tracking."""
+    status = s.get_string('status')
+    r = {'time': f'{s.get_value("timestamp") / Gst.SECOND:.3f}', 'status': status,
+         'gesture': s.get_string('gesture') or '', 'detail': s.get_string('detail') or ''}
+    if status in TRACKING:
+        r.update(x=f'{s.get_value("position-x"):.4f}', y=f'{s.get_value("position-y"):.4f}',
+                 depth=f'{s.get_value("depth"):.4f}', centroid_x=f'{s.get_value("centroid-x"):.2f}',
+                 centroid_y=f'{s.get_value("centroid-y"):.2f}', area=f'{s.get_value("area"):.0f}')
+    return r
+
+
+def live_line(s):
+    """The live line: x, y and depth while tracking, else the status and why."""
+    status = s.get_string('status')
+    if status in TRACKING:
+        return (f'x {s.get_value("position-x"):+.2f}  y {s.get_value("position-y"):+.2f}  '
+                f'depth {s.get_value("depth"):.2f}  {status}')
+    return f'{status}: {s.get_string("detail") or ""}'
+
+
+def add_source_arguments(ap):
+    """--camera (the default), --file or --generated, and --frames: shared with
+    pointer_uinput.py."""
     src = ap.add_mutually_exclusive_group()
     src.add_argument('--camera', default='/dev/video0', help='V4L2 device (default)')
     src.add_argument('--file', help='a video file')
     src.add_argument('--generated', action='store_true', help='a generated hand')
     ap.add_argument('--frames', type=int, default=120, help='with --generated')
-    ap.add_argument('--out', default='out/trajectory.png', help='the plot, for files')
-    args = ap.parse_args()
-    Gst.init(None)
 
-    tracker = 'projtrack name=tracker acquisition=auto'
-    feed = None
+
+def source_pipeline(args, tracker, camera_tail):
+    """(pipeline, feed): the source the arguments name into `tracker` (a projtrack element and
+    what follows it: `camera_tail` after a camera, fakesink after a file or generated frames);
+    `feed` pushes the generated frames (None for the others)."""
     if args.generated:
-        pipeline, feed = generated_source(tracker + ' ! fakesink', args.frames)
-    elif args.file:
-        pipeline = Gst.parse_launch(f'filesrc location="{args.file}" ! decodebin ! videoconvert ! '
-                                    f'{tracker} ! fakesink')
-    else:
-        pipeline = Gst.parse_launch(f'v4l2src device={args.camera} ! videoconvert ! {tracker} '
-                                    'draw=true ! videoconvert ! autovideosink')
-    samples, pushes, state = [], [], {}
+        return generated_source(f'{tracker} ! fakesink', args.frames)
+    if args.file:
+        return Gst.parse_launch(f'filesrc location="{args.file}" ! decodebin ! videoconvert ! '
+                                f'{tracker} ! fakesink'), None
+    return Gst.parse_launch(f'v4l2src device={args.camera} ! videoconvert ! {tracker} '
+                            f'{camera_tail}'), None
+
+
+def run_pipeline(pipeline, feed, on_projtrack):
+    """Plays `pipeline` until its end, an error or Ctrl-C, calling on_projtrack(structure) for
+    every projtrack message."""
     loop = GLib.MainLoop()
 
     def on_message(bus, msg):
@@ -103,21 +150,7 @@ def main():
         elif msg.type == Gst.MessageType.EOS:
             loop.quit()
         elif msg.type == Gst.MessageType.ELEMENT and msg.get_structure().get_name() == 'projtrack':
-            s = msg.get_structure()
-            t = s.get_value('timestamp') / Gst.SECOND
-            if s.has_field('depth') and s.get_string('status') != 'lost':
-                samples.append((t, s.get_value('position-x'), s.get_value('position-y'),
-                                s.get_value('depth')))
-            if s.has_field('acquired'):
-                print(f'{t:7.2f}s  acquired an object', flush=True)
-            if s.get_string('status') == 'lost' and not state.get('lost'):
-                print(f'{t:7.2f}s  lost: {s.get_string("detail")}', flush=True)
-            state['lost'] = s.get_string('status') == 'lost'
-            if s.has_field('gesture'):
-                pushes.append(t)
-                print(f'{t:7.2f}s  {s.get_string("gesture")}  at x {s.get_value("position-x"):+.2f} '
-                      f'y {s.get_value("position-y"):+.2f} depth {s.get_value("depth"):.2f}',
-                      flush=True)
+            on_projtrack(msg.get_structure())
         return True
 
     bus = pipeline.get_bus()
@@ -131,10 +164,71 @@ def main():
     except KeyboardInterrupt:
         pass
     pipeline.set_state(Gst.State.NULL)
-    if (args.file or args.generated) and samples:
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    add_source_arguments(ap)
+    ap.add_argument('--out', default='out/trajectory.png', help='the plot, for files')
+    ap.add_argument('--csv', default='out/trajectory.csv', help='every frame, for files')
+    ap.add_argument('--live', action='store_true',
+                    help='print the live line even when the output is not a terminal')
+    args = ap.parse_args()
+    camera = not (args.file or args.generated)
+    if camera and (why := camera_problem(args.camera)):
+        print(f'cursor3d: {why}: plug one in, or use --file clip.mp4 or --generated',
+              file=sys.stderr)
+        return 2
+    Gst.init(None)
+    live = args.live or sys.stdout.isatty()
+
+    # A camera's picture with the overlay in a window, when there is a display to open one on.
+    sink = 'videoconvert ! autovideosink' if has_display() else 'fakesink'
+    pipeline, feed = source_pipeline(args, 'projtrack name=tracker acquisition=auto',
+                                     f'draw=true ! {sink}')
+    samples, pushes, state = [], [], {}
+    writer = None
+    if not camera:
+        os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
+        csv_file = open(args.csv, 'w', newline='')
+        writer = csv.DictWriter(csv_file, CSV_FIELDS)
+        writer.writeheader()
+
+    def say(text):
+        """An event on its own line (after the live line, if one is shown)."""
+        print(('\r\033[K' if live else '') + text, flush=True)
+
+    def on_projtrack(s):
+        t = s.get_value('timestamp') / Gst.SECOND
+        status = s.get_string('status')
+        if writer:
+            writer.writerow(row(s))
+        # A lost message holds the last features: only a tracking status is a measurement.
+        if status in TRACKING:
+            samples.append((t, s.get_value('position-x'), s.get_value('position-y'),
+                            s.get_value('depth')))
+        if s.has_field('acquired'):
+            say(f'{t:7.2f}s  acquired an object')
+        if status == 'lost' and not state.get('lost'):
+            say(f'{t:7.2f}s  lost: {s.get_string("detail")}')
+        state['lost'] = status == 'lost'
+        if s.has_field('gesture') and status in TRACKING:
+            pushes.append(t)
+            say(f'{t:7.2f}s  {s.get_string("gesture")}  at x {s.get_value("position-x"):+.2f} '
+                f'y {s.get_value("position-y"):+.2f} depth {s.get_value("depth"):.2f}')
+        if live:
+            print(f'\r\033[K{t:7.2f}s  {live_line(s)}', end='', flush=True)
+
+    run_pipeline(pipeline, feed, on_projtrack)
+    if live:
+        print()
+    if writer:
+        csv_file.close()
+    if not camera and samples:
         os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
         plot(samples, pushes, args.out)
-        print(f'{len(samples)} frames tracked, {len(pushes)} push(es); wrote {args.out}')
+        print(f'{len(samples)} frames tracked, {len(pushes)} push(es); wrote {args.csv} and '
+              f'{args.out}')
     return 0 if samples else 1
 
 

@@ -11,19 +11,26 @@
   "videotestsrc pattern=ball num-buffers=60 ! video/x-raw,width=320,height=240 ! " \
   "projtrack inner-point-x=160 inner-point-y=120 ! fakesink"
 
+/* Only these statuses carry features measured on this frame; a "lost" message repeats the last
+ * measured ones, which must not be read as a measurement. */
+static gboolean measured(const gchar* status) {
+  return g_strcmp0(status, "ok") == 0 || g_strcmp0(status, "reached-border") == 0 ||
+         g_strcmp0(status, "covers-frame") == 0;
+}
+
 static void print_features(const GstStructure* s) {
   GstClockTime ts = GST_CLOCK_TIME_NONE;
-  gdouble cx, cy, area;
+  gdouble cx = 0, cy = 0, area = 0;
   gst_structure_get_uint64(s, "timestamp", &ts);
   const gchar* status = gst_structure_get_string(s, "status");
-  if (gst_structure_get_double(s, "centroid-x", &cx) &&
+  if (measured(status) && gst_structure_get_double(s, "centroid-x", &cx) &&
       gst_structure_get_double(s, "centroid-y", &cy) &&
       gst_structure_get_double(s, "area", &area)) {
     printf("%" GST_TIME_FORMAT " %-15s centroid (%7.1f, %7.1f)  area %9.0f px²\n",
            GST_TIME_ARGS(ts), status, cx, cy, area);
-  } else { /* nothing tracked: the status says why */
-    printf("%" GST_TIME_FORMAT " %-15s %s\n", GST_TIME_ARGS(ts), status,
-           gst_structure_get_string(s, "detail"));
+  } else { /* nothing measured: the status says why */
+    const gchar* detail = gst_structure_get_string(s, "detail");
+    printf("%" GST_TIME_FORMAT " %-15s %s\n", GST_TIME_ARGS(ts), status, detail ? detail : "");
   }
 }
 

@@ -21,12 +21,17 @@ DEFAULT_PIPELINE = ('videotestsrc pattern=ball num-buffers=60 ! video/x-raw,widt
                     'projtrack inner-point-x=160 inner-point-y=120 ! fakesink')
 
 
+# Only these statuses carry features measured on this frame. A 'lost' message repeats the last
+# measured ones (so that an app can hold its pointer): never read them as a measurement.
+MEASURED = ('ok', 'reached-border', 'covers-frame')
+
+
 def describe(s):
     """One line for one 'projtrack' message structure."""
     ts = s.get_value('timestamp')
     when = f'{ts / Gst.SECOND:8.3f}s' if ts != Gst.CLOCK_TIME_NONE else '       -'
     status = s.get_string('status')
-    if not s.has_field('area'):  # nothing tracked: the status says why
+    if status not in MEASURED:  # nothing measured: the status says why
         return f'{when} {status:15} {s.get_string("detail") or ""}'
     return (f'{when} {status:15} centroid ({s.get_value("centroid-x"):7.1f}, '
             f'{s.get_value("centroid-y"):7.1f})  area {s.get_value("area"):9.0f} px²  '

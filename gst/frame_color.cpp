@@ -19,23 +19,44 @@ bool has_luma_plane(GstVideoFormat format) {
   }
 }
 
+bool is_packed_yuv(GstVideoFormat format) {
+  return format == GST_VIDEO_FORMAT_YUY2 || format == GST_VIDEO_FORMAT_UYVY;
+}
+
+namespace {
+
+// Components 1 and 2 are U and V whatever their planes (YV12 swaps them, NV12 interleaves them,
+// YUY2 and UYVY pack them between the luma samples).
+ChromaView chroma_in_place(const GstVideoFrame* frame) {
+  ChromaView c;
+  c.u = static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, 1));
+  c.v = static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, 2));
+  c.stride = GST_VIDEO_FRAME_COMP_STRIDE(frame, 1);
+  c.pixel_stride = GST_VIDEO_FRAME_COMP_PSTRIDE(frame, 1);
+  c.shift_x = GST_VIDEO_FORMAT_INFO_W_SUB(frame->info.finfo, 1);
+  c.shift_y = GST_VIDEO_FORMAT_INFO_H_SUB(frame->info.finfo, 1);
+  return c;
+}
+
+}  // namespace
+
 ColorView frame_color(const GstVideoFrame* frame, std::vector<std::uint8_t>& buffer) {
   const int width = GST_VIDEO_FRAME_WIDTH(frame), height = GST_VIDEO_FRAME_HEIGHT(frame);
-  const GstVideoFormatInfo* info = frame->info.finfo;
   if (has_luma_plane(GST_VIDEO_FRAME_FORMAT(frame))) {
     ColorView c;
     c.luma = ImageView(static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame, 0)),
                        width, height, GST_VIDEO_FRAME_PLANE_STRIDE(frame, 0));
-    if (GST_VIDEO_FRAME_N_COMPONENTS(frame) >= 3) {
-      // Components 1 and 2 are U and V whatever their planes (YV12 swaps them, NV12 interleaves).
-      c.chroma.u = static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, 1));
-      c.chroma.v = static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, 2));
-      c.chroma.stride = GST_VIDEO_FRAME_COMP_STRIDE(frame, 1);
-      c.chroma.pixel_stride = GST_VIDEO_FRAME_COMP_PSTRIDE(frame, 1);
-      c.chroma.shift_x = GST_VIDEO_FORMAT_INFO_W_SUB(info, 1);
-      c.chroma.shift_y = GST_VIDEO_FORMAT_INFO_H_SUB(info, 1);
-    }
+    if (GST_VIDEO_FRAME_N_COMPONENTS(frame) >= 3) c.chroma = chroma_in_place(frame);
     return c;
+  }
+  if (is_packed_yuv(GST_VIDEO_FRAME_FORMAT(frame))) {
+    // The library reads luma rows of adjacent bytes: YUY2's and UYVY's every second byte is
+    // gathered once (a row copy's cost); their chroma is read in place.
+    buffer.resize(static_cast<std::size_t>(width) * height);
+    gather_component(static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, 0)),
+                     GST_VIDEO_FRAME_COMP_PSTRIDE(frame, 0), GST_VIDEO_FRAME_COMP_STRIDE(frame, 0),
+                     width, height, buffer.data(), width);
+    return {ImageView(buffer.data(), width, height, width), chroma_in_place(frame)};
   }
   // Packed RGB: components 0, 1, 2 are R, G, B whatever their order in memory.
   const std::size_t luma = static_cast<std::size_t>(width) * height;

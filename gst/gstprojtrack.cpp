@@ -25,14 +25,18 @@
  * pointer: `position-x`, `position-y` in [-1, 1] and a relative `depth` (smoothed by a One Euro
  * filter), and a quick push toward the camera posts `gesture=push`.
  *
- * An inner point can also be given: the `inner-point-x`/`inner-point-y` properties, or a click:
- * a left mouse-button press arriving from downstream (a click in the window of `autovideosink`)
- * starts tracking at the clicked pixel; a right click stops it. With `draw=true` the element
- * draws what the estimator did: rays and hits, selected blocks, filled pixels or grid lines, the
- * bounding box, the centroid and the inner point.
+ * An inner point or a box can also be given: the `inner-point-x`/`inner-point-y` and
+ * `start-box` properties, the `track-point`, `track-box` and `reset` action signals (one call, no
+ * race), or a click: a left mouse-button press arriving from downstream (a click in the window of
+ * `autovideosink`) starts tracking at the clicked pixel; a right click stops it.
+ * `current-inner-point-x`/`-y` say where the tracker is. `updates` chooses which frames post a
+ * message (every frame, on a change, none); conflicting settings are posted as an element warning
+ * and `status=invalid-parameters` on the first frame. With `draw=true` the element draws the
+ * status and why, x, y and depth, the object's outline and what the estimator did.
  *
  * YUV formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444) are read in place, luma and chroma;
- * packed RGB is converted internally. The element works in place; without `draw` it maps frames
+ * YUY2 and UYVY have their chroma read in place and their luma gathered once; packed RGB is
+ * converted internally. The element works in place; without `draw` it maps frames
  * read-only and never copies them.
  *
  * ## Example launch lines
@@ -41,9 +45,11 @@
  * projtrack inner-point-x=160 inner-point-y=120 ! fakesink
  * ]| Tracks videotestsrc's ball and prints a `projtrack` message per frame.
  * |[
- * gst-launch-1.0 -m v4l2src ! videoconvert ! projtrack draw=true ! videoconvert ! autovideosink
+ * gst-launch-1.0 -m v4l2src ! videoconvert ! projtrack draw=true updates=on-change ! videoconvert !
+ * autovideosink
  * ]| Wave an evenly coloured object: it is found, tracked and, when lost, found again; clicking
- * on an object tracks that one. The overlay shows the grid fill.
+ * on an object tracks that one. The overlay says what is tracked, or why not; a message is
+ * posted only when that changes.
  * |[
  * gst-launch-1.0 filesrc location=clip.mp4 ! decodebin ! videoconvert ! projtrack
  * method=pixel-filling draw=true inner-point-x=320 inner-point-y=240 ! videoconvert ! autovideosink
@@ -57,6 +63,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -84,6 +91,13 @@ constexpr Method kDefaultMethod = Method::GapTolerantFilling;
 constexpr EdgeDetector kDefaultEdgeDetector = EdgeDetector::Canny;
 constexpr double kMaxGradientThreshold = 10000.0;
 
+// Which frames post a projtrack message (as facedetect's `updates`).
+enum class Updates {
+  EveryFrame,  // every frame
+  OnChange,    // when the status changes, an object is acquired, or a push completes
+  None,        // never
+};
+
 // Everything a user can set; read by the streaming thread as one copy per frame.
 struct Settings {
   Method method = kDefaultMethod;
@@ -92,11 +106,13 @@ struct Settings {
   projtrack::TrackerParams tracker;
   bool draw = false;
   bool post_messages = true;
-  int seed_x = -1, seed_y = -1;  // the last inner point given (property or click); -1 = none
+  Updates updates = Updates::EveryFrame;
+  int seed_x = -1, seed_y = -1;  // the last inner point given (property, signal, click); -1 = none
+  projtrack::Rect seed_box;      // the last box given (start-box, track-box); empty = none
 };
 
 // What the streaming thread must do to the track before the next frame.
-enum class SeedCommand { None, Seed, Reset };
+enum class SeedCommand { None, Seed, SeedBox, Reset };
 
 // Per-stream state: created in set_info, dropped in stop; touched by the streaming thread only.
 struct Stream {
@@ -107,6 +123,8 @@ struct Stream {
   int black_level = 0;  // of edge-detector=input: 16 in limited-range YUV
   guint64 frames = 0;   // for buffers without timestamps
   Status last_status = Status::NoInnerPoint;
+  std::optional<Status> last_posted;  // the status of the last message posted (updates=on-change)
+  std::string last_warning;           // the conflict last reported by an element warning
 };
 
 }  // namespace
@@ -116,6 +134,8 @@ struct _GstProjtrack {
   Settings* settings;             // GST_OBJECT_LOCK
   SeedCommand pending;            // GST_OBJECT_LOCK
   int frame_width, frame_height;  // GST_OBJECT_LOCK: the negotiated size, for clicks
+  int tracked_x, tracked_y;       // GST_OBJECT_LOCK: the tracker's inner point after the last
+                                  // frame (current-inner-point-x/y); -1 = none
   Stream* stream;                 // streaming thread
 };
 
@@ -144,14 +164,20 @@ enum {
   PROP_SMOOTHING_MIN_CUTOFF,
   PROP_SMOOTHING_BETA,
   PROP_PUSH_THRESHOLD,
+  PROP_UPDATES,
+  PROP_START_BOX,
+  PROP_CURRENT_INNER_POINT_X,
+  PROP_CURRENT_INNER_POINT_Y,
   N_PROPERTIES
 };
 
 static GParamSpec* properties[N_PROPERTIES];
 
+enum { SIGNAL_TRACK_POINT, SIGNAL_TRACK_BOX, SIGNAL_RESET, N_SIGNALS };
+
 #define VIDEO_FORMATS                                                                             \
-  "{ I420, YV12, NV12, NV21, Y42B, Y444, GRAY8, BGRx, RGBx, xRGB, xBGR, BGRA, RGBA, ARGB, ABGR, " \
-  "BGR, RGB }"
+  "{ I420, YV12, NV12, NV21, Y42B, Y444, YUY2, UYVY, GRAY8, BGRx, RGBx, xRGB, xBGR, BGRA, RGBA, " \
+  "ARGB, ABGR, BGR, RGB }"
 
 static GstStaticPadTemplate sink_template = GST_STATIC_PAD_TEMPLATE(
     "sink", GST_PAD_SINK, GST_PAD_ALWAYS, GST_STATIC_CAPS(GST_VIDEO_CAPS_MAKE(VIDEO_FORMATS)));
@@ -216,6 +242,23 @@ GType gst_projtrack_object_model_get_type(void) {
   return type;
 }
 
+GType gst_projtrack_updates_get_type(void) {
+  static GType type = 0;
+  static const GEnumValue values[] = {
+      {static_cast<gint>(Updates::EveryFrame), "A message for every frame", "every-frame"},
+      {static_cast<gint>(Updates::OnChange),
+       "A message when the status changes, an object is acquired, or a push completes",
+       "on-change"},
+      {static_cast<gint>(Updates::None), "No messages (the ROI meta is still attached)", "none"},
+      {0, nullptr, nullptr}};
+  if (g_once_init_enter(&type)) {
+    g_once_init_leave(&type, g_enum_register_static("GstProjtrackUpdates", values));
+  }
+  return type;
+}
+
+static guint signals[N_SIGNALS];
+
 G_DEFINE_TYPE(GstProjtrack, gst_projtrack, GST_TYPE_VIDEO_FILTER)
 GST_ELEMENT_REGISTER_DEFINE(projtrack, "projtrack", GST_RANK_NONE, GST_TYPE_PROJTRACK)
 
@@ -228,10 +271,42 @@ static void set_inner_point_locked(GstProjtrack* self, int x, int y,
   Settings& s = *self->settings;
   s.seed_x = x;
   s.seed_y = y;
+  s.seed_box = {};
   if (x >= 0 && y >= 0)
     self->pending = SeedCommand::Seed;
   else if (!awaiting_coordinate)
     self->pending = SeedCommand::Reset;
+}
+
+// A box to start from (start-box, track-box): the track starts there on the next frame; an empty
+// box stops it.
+static void set_box_locked(GstProjtrack* self, const projtrack::Rect& box) {
+  Settings& s = *self->settings;
+  s.seed_x = s.seed_y = -1;
+  s.seed_box = box.empty() ? projtrack::Rect{} : box;
+  self->pending = box.empty() ? SeedCommand::Reset : SeedCommand::SeedBox;
+}
+
+// start-box: x, y, width, height, or nothing (an empty array, or width or height under 1).
+static projtrack::Rect box_of(const GValue* array) {
+  if (gst_value_array_get_size(array) != 4) return {};
+  int v[4];
+  for (guint i = 0; i < 4; ++i) {
+    const GValue* item = gst_value_array_get_value(array, i);
+    if (!G_VALUE_HOLDS_INT(item)) return {};
+    v[i] = g_value_get_int(item);
+  }
+  return {v[0], v[1], v[2], v[3]};
+}
+
+static void set_box_value(GValue* array, const projtrack::Rect& box) {
+  if (box.empty()) return;
+  for (int v : {box.x, box.y, box.width, box.height}) {
+    GValue item = G_VALUE_INIT;
+    g_value_init(&item, G_TYPE_INT);
+    g_value_set_int(&item, v);
+    gst_value_array_append_and_take_value(array, &item);
+  }
 }
 
 static void gst_projtrack_set_property(GObject* object, guint prop_id, const GValue* value,
@@ -309,6 +384,12 @@ static void gst_projtrack_set_property(GObject* object, guint prop_id, const GVa
       break;
     case PROP_PUSH_THRESHOLD:
       s.tracker.push.threshold = g_value_get_double(value);
+      break;
+    case PROP_UPDATES:
+      s.updates = static_cast<Updates>(g_value_get_enum(value));
+      break;
+    case PROP_START_BOX:
+      set_box_locked(self, box_of(value));
       break;
     default:
       G_OBJECT_WARN_INVALID_PROPERTY_ID(object, prop_id, pspec);
@@ -392,6 +473,18 @@ static void gst_projtrack_get_property(GObject* object, guint prop_id, GValue* v
     case PROP_PUSH_THRESHOLD:
       g_value_set_double(value, s.tracker.push.threshold);
       break;
+    case PROP_UPDATES:
+      g_value_set_enum(value, static_cast<gint>(s.updates));
+      break;
+    case PROP_START_BOX:
+      set_box_value(value, s.seed_box);
+      break;
+    case PROP_CURRENT_INNER_POINT_X:
+      g_value_set_int(value, self->tracked_x);
+      break;
+    case PROP_CURRENT_INNER_POINT_Y:
+      g_value_set_int(value, self->tracked_y);
+      break;
     default:
       G_OBJECT_WARN_INVALID_PROPERTY_ID(object, prop_id, pspec);
       break;
@@ -401,7 +494,40 @@ static void gst_projtrack_get_property(GObject* object, guint prop_id, GValue* v
 
 // A restart (caps change, stop/start) begins again from the last inner point given, if any.
 static void reseed_locked(GstProjtrack* self) {
-  set_inner_point_locked(self, self->settings->seed_x, self->settings->seed_y);
+  if (!self->settings->seed_box.empty())
+    set_box_locked(self, self->settings->seed_box);
+  else
+    set_inner_point_locked(self, self->settings->seed_x, self->settings->seed_y);
+}
+
+static void notify_inner_point(GstProjtrack* self) {
+  for (int prop : {PROP_INNER_POINT_X, PROP_INNER_POINT_Y, PROP_START_BOX})
+    g_object_notify_by_pspec(G_OBJECT(self), properties[prop]);
+}
+
+// Action signals: an app starts or stops a track in one call (no race between two properties).
+static void gst_projtrack_track_point(GstProjtrack* self, gint x, gint y) {
+  GST_OBJECT_LOCK(self);
+  set_inner_point_locked(self, x, y);  // a negative coordinate stops the track
+  GST_OBJECT_UNLOCK(self);
+  GST_INFO_OBJECT(self, "track-point %d, %d", x, y);
+  notify_inner_point(self);
+}
+
+static void gst_projtrack_track_box(GstProjtrack* self, gint x, gint y, gint width, gint height) {
+  GST_OBJECT_LOCK(self);
+  set_box_locked(self, {x, y, width, height});  // an empty box stops the track
+  GST_OBJECT_UNLOCK(self);
+  GST_INFO_OBJECT(self, "track-box %d, %d, %dx%d", x, y, width, height);
+  notify_inner_point(self);
+}
+
+static void gst_projtrack_reset(GstProjtrack* self) {
+  GST_OBJECT_LOCK(self);
+  set_inner_point_locked(self, -1, -1);
+  GST_OBJECT_UNLOCK(self);
+  GST_INFO_OBJECT(self, "reset");
+  notify_inner_point(self);
 }
 
 static gboolean gst_projtrack_set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info,
@@ -434,6 +560,7 @@ static gboolean gst_projtrack_stop(GstBaseTransform* trans) {
   self->stream = nullptr;
   GST_OBJECT_LOCK(self);
   reseed_locked(self);
+  self->tracked_x = self->tracked_y = -1;
   GST_OBJECT_UNLOCK(self);
   return TRUE;
 }
@@ -461,10 +588,7 @@ static gboolean gst_projtrack_src_event(GstBaseTransform* trans, GstEvent* event
       GST_OBJECT_UNLOCK(self);
       GST_INFO_OBJECT(self, "click (button %d) at %.1f, %.1f: %s inner point %d, %d", button, x, y,
                       changed ? "new" : "outside the picture, kept the", sx, sy);
-      if (changed) {
-        g_object_notify_by_pspec(G_OBJECT(self), properties[PROP_INNER_POINT_X]);
-        g_object_notify_by_pspec(G_OBJECT(self), properties[PROP_INNER_POINT_Y]);
-      }
+      if (changed) notify_inner_point(self);
     }
   }
   return GST_BASE_TRANSFORM_CLASS(gst_projtrack_parent_class)->src_event(trans, event);
@@ -531,6 +655,8 @@ static TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Setti
   Stream& st = *self->stream;
   if (command == SeedCommand::Seed)
     st.tracker.seed({s.seed_x, s.seed_y});
+  else if (command == SeedCommand::SeedBox)
+    st.tracker.seed_box(s.seed_box);
   else if (command == SeedCommand::Reset)
     st.tracker.reset();
   projtrack::EdgeParams edge_params = s.edges;
@@ -546,11 +672,19 @@ static TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Setti
   // The tracker computes the edges itself: while tracking, only around the object.
   TrackResult r = st.tracker.track(color, edge_params, t, s.method, s.params, s.tracker, trace);
   if (s.draw) {
-    projtrack::gst::draw_overlay(frame, s.method, r.features, st.trace);
+    projtrack::gst::draw_overlay(frame, s.method, r, st.trace);
     if (st.trace.rays_not_recorded)
       GST_LOG_OBJECT(self, "overlay: %zu rays not recorded", st.trace.rays_not_recorded);
   }
   return r;
+}
+
+// Whether this frame posts a message: every frame; on a change (another status, an acquisition,
+// a push); or never.
+static bool worth_posting(Updates updates, const TrackResult& r, std::optional<Status>& last) {
+  const bool changed = last != r.status || r.acquired || r.push;
+  last = r.status;
+  return updates == Updates::EveryFrame || (updates == Updates::OnChange && changed);
 }
 
 // In place, as GstVideoFilter would, but the frame is mapped for writing only when the overlay
@@ -587,19 +721,29 @@ static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuff
   if (projtrack::has_features(r.status)) attach_meta(buffer, r, s.method);
 
   Stream& st = *self->stream;
+  const std::string& detail = r.detail.empty() ? r.features.detail : r.detail;
   if (r.status != st.last_status) {
-    const std::string& detail = r.detail.empty() ? r.features.detail : r.detail;
-    if (r.status == Status::InvalidParameters)
-      GST_WARNING_OBJECT(self, "invalid parameters: %s", detail.c_str());
-    else
-      GST_INFO_OBJECT(self, "status %s -> %s%s%s", projtrack::status_name(st.last_status).data(),
-                      projtrack::status_name(r.status).data(), detail.empty() ? "" : ": ",
-                      detail.c_str());
+    GST_INFO_OBJECT(self, "status %s -> %s%s%s", projtrack::status_name(st.last_status).data(),
+                    projtrack::status_name(r.status).data(), detail.empty() ? "" : ": ",
+                    detail.c_str());
     st.last_status = r.status;
   }
+  // Settings that conflict are said at once, whatever `updates` is, and again when they change.
+  if (r.status != Status::InvalidParameters) {
+    st.last_warning.clear();
+  } else if (detail != st.last_warning) {
+    st.last_warning = detail;
+    GST_ELEMENT_WARNING(self, LIBRARY, SETTINGS, ("Conflicting settings: %s", detail.c_str()),
+                        ("nothing is tracked until they are fixed"));
+  }
   if (r.push) GST_INFO_OBJECT(self, "gesture: push");
+  const std::optional<projtrack::Point2i>& inner = st.tracker.inner_point();
+  GST_OBJECT_LOCK(self);
+  self->tracked_x = inner ? inner->x : -1;
+  self->tracked_y = inner ? inner->y : -1;
+  GST_OBJECT_UNLOCK(self);
 
-  if (s.post_messages) {
+  if (s.post_messages && worth_posting(s.updates, r, st.last_posted)) {
     const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
                         std::chrono::steady_clock::now() - start)
                         .count();
@@ -621,6 +765,7 @@ static void gst_projtrack_init(GstProjtrack* self) {
   self->settings = new Settings;
   self->pending = SeedCommand::None;
   self->frame_width = self->frame_height = 0;
+  self->tracked_x = self->tracked_y = -1;
   self->stream = nullptr;
   // Metadata needs a writable buffer: never pass buffers through untouched.
   gst_base_transform_set_passthrough(GST_BASE_TRANSFORM(self), FALSE);
@@ -643,100 +788,164 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
                                               GST_PARAM_MUTABLE_PLAYING);
   const projtrack::Params p;
   const projtrack::EdgeParams e;
-  properties[PROP_METHOD] =
-      g_param_spec_enum("method", "Method", "Feature estimation method", GST_TYPE_PROJTRACK_METHOD,
-                        static_cast<gint>(kDefaultMethod), flags);
-  properties[PROP_RAYS] =
-      g_param_spec_uint("rays", "Rays", "n: rays per cast (ray methods and the inner-point update)",
-                        projtrack::kMinRays, projtrack::kMaxRays, p.rays, flags);
+  // Blurbs say what a setting does in a user's words and which methods it matters to (every
+  // method keeps the inner point centred with `rays` rays).
+  properties[PROP_METHOD] = g_param_spec_enum(
+      "method", "Method",
+      "How the object's centroid and area are measured inside its outline: rays cast from the "
+      "inner point, or a fill (gap-tolerant-filling, the default, does not leak through small "
+      "breaks in the outline)",
+      GST_TYPE_PROJTRACK_METHOD, static_cast<gint>(kDefaultMethod), flags);
+  properties[PROP_RAYS] = g_param_spec_uint(
+      "rays", "Rays",
+      "How many rays are cast from the inner point: the measurement of the ray-casting methods, "
+      "and, for every method, how the inner point is kept in the middle of the object",
+      projtrack::kMinRays, projtrack::kMaxRays, p.rays, flags);
   properties[PROP_RECURSION] = g_param_spec_uint(
       "recursion", "Recursion",
-      "y: levels of re-casting for recursive/rasterized ray-casting (rays^recursion <= 1048576)",
+      "recursive- and rasterized-ray-casting: how many times rays are cast again from where they "
+      "hit (rays to the power recursion must stay at most 1048576)",
       projtrack::kMinRecursion, projtrack::kMaxRecursion, p.recursion, flags);
-  properties[PROP_BLOCK_SIZE] =
-      g_param_spec_uint("block-size", "Block size", "m of m-rasterization, in pixels", 1,
-                        projtrack::kMaxCellSize, p.block_size, flags);
-  properties[PROP_GRID_SIZE] =
-      g_param_spec_uint("grid-size", "Grid size", "m of m-grid-filling: grid cell size in pixels",
-                        1, projtrack::kMaxCellSize, p.grid_size, flags);
+  properties[PROP_BLOCK_SIZE] = g_param_spec_uint(
+      "block-size", "Block size",
+      "rasterized-ray-casting: side, in pixels, of the squares that the rays mark as the object", 1,
+      projtrack::kMaxCellSize, p.block_size, flags);
+  properties[PROP_GRID_SIZE] = g_param_spec_uint(
+      "grid-size", "Grid size",
+      "grid-filling and gap-tolerant-filling: spacing, in pixels, of the grid lines the fill "
+      "follows (smaller: more exact, slower)",
+      1, projtrack::kMaxCellSize, p.grid_size, flags);
   properties[PROP_MAX_GAP] = g_param_spec_uint(
       "max-gap", "Max gap",
-      "gap-tolerant-filling: the longest break in a contour, in pixels, that its grid lines will "
-      "not cross",
+      "gap-tolerant-filling: the longest break in the object's outline, in pixels, that the fill "
+      "will not leak through",
       1, projtrack::kMaxGap, p.max_gap, flags);
   properties[PROP_MAX_ITERATIONS] = g_param_spec_uint(
-      "max-iterations", "Max iterations", "Iteration cap of the iterative ray methods", 1,
-      projtrack::kMaxIterations, p.max_iterations, flags);
+      "max-iterations", "Max iterations",
+      "iterative-, recursive- and rasterized-ray-casting: at most this many cast-and-move rounds "
+      "per frame",
+      1, projtrack::kMaxIterations, p.max_iterations, flags);
   properties[PROP_CONVERGENCE] = g_param_spec_double(
       "convergence", "Convergence",
-      "Iterations stop when the inner point and centroid move less than this, in pixels", 0.0,
-      projtrack::kMaxConvergence, p.convergence, flags);
+      "iterative-, recursive- and rasterized-ray-casting: stop the rounds when the inner point "
+      "and the centroid move less than this many pixels",
+      0.0, projtrack::kMaxConvergence, p.convergence, flags);
   properties[PROP_EDGE_DETECTOR] = g_param_spec_enum(
-      "edge-detector", "Edge detector", "How the edge image is computed",
+      "edge-detector", "Edge detector",
+      "How the object's outline is found in the picture (every method): Canny, Sobel, or the "
+      "input already is an edge image",
       GST_TYPE_PROJTRACK_EDGE_DETECTOR, static_cast<gint>(kDefaultEdgeDetector), flags);
   properties[PROP_EDGE_THRESHOLD_LOW] = g_param_spec_double(
       "edge-threshold-low", "Edge threshold low",
-      "Canny's low hysteresis threshold, and Sobel's threshold (|Gx|+|Gy|; a step of contrast C "
-      "scores 4*C)",
+      "Every method: the weakest contrast that can continue an edge (Canny), or that makes an "
+      "edge (Sobel). A step of C grey levels scores 4*C. Must not exceed edge-threshold-high",
       0.0, kMaxGradientThreshold, e.low, flags);
   properties[PROP_EDGE_THRESHOLD_HIGH] = g_param_spec_double(
-      "edge-threshold-high", "Edge threshold high", "Canny's high hysteresis threshold", 0.0,
-      kMaxGradientThreshold, e.high, flags);
-  properties[PROP_BLUR] =
-      g_param_spec_uint("blur", "Blur", "3x3 box-blur passes before edge detection (0 = none)", 0,
-                        projtrack::kMaxBlurPasses, e.blur, flags);
+      "edge-threshold-high", "Edge threshold high",
+      "Every method with the Canny detector: the contrast that starts an edge (a step of C grey "
+      "levels scores 4*C)",
+      0.0, kMaxGradientThreshold, e.high, flags);
+  properties[PROP_BLUR] = g_param_spec_uint(
+      "blur", "Blur",
+      "Every method: how many times the picture is softened (3x3 box blur) before its edges are "
+      "found; more ignores more noise and texture",
+      0, projtrack::kMaxBlurPasses, e.blur, flags);
   properties[PROP_INNER_POINT_X] = g_param_spec_int(
       "inner-point-x", "Inner point x",
-      "Column of a pixel inside the object to track; setting it (with inner-point-y) re-seeds "
-      "the track, -1 stops it. Updated by clicks",
+      "Column of a pixel inside the object to track, with inner-point-y (every method): setting "
+      "it starts the track there, -1 stops it. Clicks update it. From an app, the track-point "
+      "signal sets both at once",
       -1, G_MAXINT, -1, flags);
   properties[PROP_INNER_POINT_Y] = g_param_spec_int(
       "inner-point-y", "Inner point y",
-      "Row of a pixel inside the object to track; setting it (with inner-point-x) re-seeds the "
-      "track, -1 stops it. Updated by clicks",
+      "Row of a pixel inside the object to track, with inner-point-x (every method): setting it "
+      "starts the track there, -1 stops it. Clicks update it",
       -1, G_MAXINT, -1, flags);
+  properties[PROP_START_BOX] = gst_param_spec_array(
+      "start-box", "Start box",
+      "A box around the object to track: <x, y, width, height> in pixels, e.g. "
+      "start-box=\"<280,200,80,80>\" (every method; the appearance model learns the object "
+      "from it). Setting it starts the track there; <> stops it. Apps: the track-box signal",
+      g_param_spec_int("coordinate", "Coordinate", "x, y, width or height", G_MININT, G_MAXINT, 0,
+                       static_cast<GParamFlags>(G_PARAM_READWRITE | G_PARAM_STATIC_STRINGS)),
+      flags);
+  properties[PROP_CURRENT_INNER_POINT_X] = g_param_spec_int(
+      "current-inner-point-x", "Current inner point x",
+      "Column where the tracker's inner point is now, after the last frame (-1: not tracking)", -1,
+      G_MAXINT, -1, static_cast<GParamFlags>(G_PARAM_READABLE | G_PARAM_STATIC_STRINGS));
+  properties[PROP_CURRENT_INNER_POINT_Y] = g_param_spec_int(
+      "current-inner-point-y", "Current inner point y",
+      "Row where the tracker's inner point is now, after the last frame (-1: not tracking)", -1,
+      G_MAXINT, -1, static_cast<GParamFlags>(G_PARAM_READABLE | G_PARAM_STATIC_STRINGS));
   properties[PROP_DRAW] = g_param_spec_boolean(
-      "draw", "Draw", "Draw what the estimator did on the video", FALSE, flags);
-  properties[PROP_POST_MESSAGES] =
-      g_param_spec_boolean("post-messages", "Post messages",
-                           "Post a projtrack element message for every frame", TRUE, flags);
+      "draw", "Draw",
+      "Draw on the video what is tracked: the status and why, x, y and depth, the object's "
+      "outline and box, and what the method did (rays, blocks, filled pixels or grid lines)",
+      FALSE, flags);
+  properties[PROP_POST_MESSAGES] = g_param_spec_boolean(
+      "post-messages", "Post messages",
+      "Post projtrack element messages on the bus (how often: updates); false posts none", TRUE,
+      flags);
+  properties[PROP_UPDATES] = g_param_spec_enum(
+      "updates", "Updates",
+      "Which frames post a projtrack message: every frame, only when something changes (the "
+      "status, an object acquired, a push), or none",
+      GST_TYPE_PROJTRACK_UPDATES, static_cast<gint>(Updates::EveryFrame), flags);
   const projtrack::TrackerParams tp;
   properties[PROP_OBJECT_MODEL] = g_param_spec_enum(
       "object-model", "Object model",
-      "What the tracker knows of the object: its edges alone (the paper's tracker) or its "
-      "appearance (colours against its surroundings, edges and motion: for real footage)",
+      "What the tracker knows of the object, for every method: its edges alone (the paper's "
+      "tracker), or its appearance (its colours against its surroundings, its edges and its "
+      "motion: for real footage)",
       GST_TYPE_PROJTRACK_OBJECT_MODEL, static_cast<gint>(tp.model), flags);
   properties[PROP_ACQUISITION] = g_param_spec_enum(
       "acquisition", "Acquisition",
-      "How tracking starts (and restarts after a loss) when no inner point is given",
+      "How tracking starts, and starts again after a loss, when no inner point or box is given: "
+      "wait, the frame centre, or the object that moves (every method)",
       GST_TYPE_PROJTRACK_ACQUISITION, static_cast<gint>(tp.acquisition), flags);
   properties[PROP_LEAK_FACTOR] = g_param_spec_double(
       "leak-factor", "Leak factor",
-      "An estimate whose area grows or shrinks by more than this factor from the last accepted "
-      "one is refused (status lost): a leak, or the inner point fell into a small region",
+      "Every method: an object whose area grows or shrinks by more than this factor from one "
+      "frame to the next is refused (status lost): the fill leaked, or the inner point slipped "
+      "into a small region",
       1.05, 1000.0, tp.leak_factor, flags);
   properties[PROP_SMOOTHING] = g_param_spec_boolean(
-      "smoothing", "Smoothing", "Smooth position-x, position-y and depth (One Euro filter)",
+      "smoothing", "Smoothing", "Smooth position-x, position-y and depth (a One Euro filter)",
       tp.smoothing, flags);
   properties[PROP_SMOOTHING_MIN_CUTOFF] = g_param_spec_double(
       "smoothing-min-cutoff", "Smoothing minimum cutoff",
-      "One Euro filter: cutoff frequency at rest, Hz (lower = smoother, more lag)", 0.01, 100.0,
+      "How smooth the pointer is at rest, in Hz: lower is smoother but lags more", 0.01, 100.0,
       tp.filter.min_cutoff, flags);
   properties[PROP_SMOOTHING_BETA] = g_param_spec_double(
       "smoothing-beta", "Smoothing beta",
-      "One Euro filter: how fast the cutoff rises with speed (higher = less lag when moving)", 0.0,
-      1000.0, tp.filter.beta, flags);
+      "How quickly smoothing gives way when the object moves fast: higher lags less", 0.0, 1000.0,
+      tp.filter.beta, flags);
   properties[PROP_PUSH_THRESHOLD] = g_param_spec_double(
       "push-threshold", "Push threshold",
-      "A push gesture is a quick rise of depth by more than this fraction, and back", 0.01, 10.0,
-      tp.push.threshold, flags);
+      "A push (a click) is the object brought quickly toward the camera by more than this "
+      "fraction of its depth, and back",
+      0.01, 10.0, tp.push.threshold, flags);
   g_object_class_install_properties(gobject_class, N_PROPERTIES, properties);
+
+  // Action signals: g_signal_emit_by_name(element, "track-point", x, y) and so on.
+  const auto action = static_cast<GSignalFlags>(G_SIGNAL_RUN_LAST | G_SIGNAL_ACTION);
+  signals[SIGNAL_TRACK_POINT] = g_signal_new_class_handler(
+      "track-point", G_TYPE_FROM_CLASS(klass), action, G_CALLBACK(gst_projtrack_track_point),
+      nullptr, nullptr, nullptr, G_TYPE_NONE, 2, G_TYPE_INT, G_TYPE_INT);
+  signals[SIGNAL_TRACK_BOX] = g_signal_new_class_handler(
+      "track-box", G_TYPE_FROM_CLASS(klass), action, G_CALLBACK(gst_projtrack_track_box), nullptr,
+      nullptr, nullptr, G_TYPE_NONE, 4, G_TYPE_INT, G_TYPE_INT, G_TYPE_INT, G_TYPE_INT);
+  signals[SIGNAL_RESET] = g_signal_new_class_handler("reset", G_TYPE_FROM_CLASS(klass), action,
+                                                     G_CALLBACK(gst_projtrack_reset), nullptr,
+                                                     nullptr, nullptr, G_TYPE_NONE, 0);
 
   gst_element_class_set_static_metadata(
       element_class, "Object projection feature tracker", "Filter/Analyzer/Video",
-      "Tracks an object from its edges and one inner point: centroid, area and bounding box on "
-      "every frame (ray-casting, filling and gap-tolerant filling estimators)",
-      "projtrack developers");
+      "Tracks one object (found by its motion, a click, an inner point or a box) and reports its "
+      "centroid, area, bounding box and a 3D pointer (x, y, depth, push clicks) on every frame: "
+      "a GstVideoRegionOfInterestMeta of type \"object\" with a \"projtrack\" parameter "
+      "structure on each buffer, and a \"projtrack\" element message on the bus",
+      PROJTRACK_CONTACT);
   gst_element_class_add_static_pad_template(element_class, &sink_template);
   gst_element_class_add_static_pad_template(element_class, &src_template);
 
@@ -749,4 +958,5 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_ACQUISITION, static_cast<GstPluginAPIFlags>(0));
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_OBJECT_MODEL, static_cast<GstPluginAPIFlags>(0));
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_EDGE_DETECTOR, static_cast<GstPluginAPIFlags>(0));
+  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_UPDATES, static_cast<GstPluginAPIFlags>(0));
 }

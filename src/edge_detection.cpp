@@ -1,6 +1,8 @@
 #include "edge_detection.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <opencv2/imgproc.hpp>
 
@@ -79,6 +81,19 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
     for (int x = 0; x < cols; ++x) e[x] = std::abs(dx[x]) + std::abs(dy[x]) >= threshold ? 255 : 0;
   }
   return view_of(edges);
+}
+
+std::string validate(const EdgeParams& params) {
+  if (!std::isfinite(params.low) || !std::isfinite(params.high))
+    return "the edge thresholds must be numbers";
+  if (params.detector == EdgeDetector::Canny && params.low > params.high) {
+    char why[160];
+    std::snprintf(why, sizeof why,
+                  "edge-threshold-low %g is above edge-threshold-high %g: Canny needs low <= high",
+                  params.low, params.high);
+    return why;
+  }
+  return {};
 }
 
 }  // namespace projtrack

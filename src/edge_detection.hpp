@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <opencv2/core.hpp>
+#include <string>
 #include <vector>
 
 #include "canny.hpp"
@@ -22,7 +23,8 @@ inline constexpr int kMaxBlurPasses = 16;
 struct EdgeParams {
   EdgeDetector detector = EdgeDetector::Canny;
   // Gradient thresholds on the |Gx| + |Gy| scale of a 3×3 Sobel, where a step of contrast C
-  // (grey levels) scores 4·C. Canny: hysteresis (swapped if low > high). Sobel: `low` only.
+  // (grey levels) scores 4·C. Canny: hysteresis; EdgeMap swaps them if low > high, validate()
+  // reports it (the tracker refuses such settings). Sobel: `low` only.
   double low = 50;
   double high = 150;
   int blur = 1;  // 3×3 box-blur passes before detecting (0 = none; the original system used 2)
@@ -30,6 +32,10 @@ struct EdgeParams {
   // limited-range video stores black as 16, so an edge map there is luma > 16.
   int input_black_level = 0;
 };
+
+// Empty when the parameters work together; otherwise says what conflicts (Canny's low threshold
+// above its high one) or is not a number.
+std::string validate(const EdgeParams& params);
 
 // Owns the edge and blur buffers and reuses them: after the first frame of a given size, detect()
 // does not allocate.

@@ -43,4 +43,13 @@ void packed_rgb_to_chroma(const std::uint8_t* r, const std::uint8_t* g, const st
   }
 }
 
+void gather_component(const std::uint8_t* first, int pixel_stride, std::ptrdiff_t row_stride,
+                      int width, int height, std::uint8_t* out, std::ptrdiff_t out_stride) {
+  for (int y = 0; y < height; ++y) {
+    const std::uint8_t* in = first + y * row_stride;
+    std::uint8_t* o = out + y * out_stride;
+    for (int x = 0; x < width; ++x) o[x] = in[static_cast<std::ptrdiff_t>(x) * pixel_stride];
+  }
+}
+
 }  // namespace projtrack

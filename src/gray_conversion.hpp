@@ -1,4 +1,5 @@
-// Packed RGB of any component order to 8-bit gray and chroma, for frames that have no YUV planes.
+// Packed RGB of any component order to 8-bit gray and chroma, for frames that have no YUV planes;
+// packed YUV's luma into a plane.
 #pragma once
 
 #include <cstddef>
@@ -16,6 +17,11 @@ constexpr std::uint8_t gray_of(int r, int g, int b) {
 void packed_rgb_to_gray(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b,
                         int pixel_stride, std::ptrdiff_t row_stride, int width, int height,
                         std::uint8_t* gray, std::ptrdiff_t gray_stride);
+
+// One component of a packed format (YUY2's or UYVY's luma: every second byte) into a plane of
+// its own; rows of both images may be padded.
+void gather_component(const std::uint8_t* first, int pixel_stride, std::ptrdiff_t row_stride,
+                      int width, int height, std::uint8_t* out, std::ptrdiff_t out_stride);
 
 // The chroma of one RGB pixel, BT.601 full range: Cb = U and Cr = V, 128 for a neutral colour.
 constexpr std::uint8_t u_of(int r, int g, int b) {

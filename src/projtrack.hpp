@@ -1,6 +1,7 @@
-// libprojtrack: the whole public API in one include.
+// libprojtrack: the whole public API in one include, <projtrack/projtrack.hpp>.
 #pragma once
 
+#include "color_view.hpp"
 #include "edge_detection.hpp"
 #include "estimator.hpp"
 #include "features.hpp"
@@ -11,3 +12,4 @@
 #include "status.hpp"
 #include "trace.hpp"
 #include "tracker.hpp"
+#include "tracker_params.hpp"

@@ -129,6 +129,16 @@ TrackResult Tracker::track(const ColorView& frame, EdgeSource& edges, double t, 
     r.detail = "no usable frame";
     return r;
   }
+  // Settings that cannot work are said at once, on every frame, never searched with: the track
+  // waits for them to be fixed.
+  std::string bad = validate(params);
+  if (bad.empty()) bad = validate(edges.params());
+  if (!bad.empty()) {
+    TrackResult r;
+    r.status = Status::InvalidParameters;
+    r.detail = std::move(bad);
+    return r;
+  }
   // An edge map given as the frame (EdgeDetector::Input) shows no appearance: the edges model.
   const ObjectModelKind model =
       edges.params().detector == EdgeDetector::Input ? ObjectModelKind::Edges : tp.model;
@@ -369,11 +379,6 @@ TrackResult Tracker::track_appearance(const ColorView& frame, EdgeSource& edges,
                                       const Params& params, const TrackerParams& tp, Trace* trace) {
   TrackResult r;
   const int w = frame.luma.width, h = frame.luma.height;
-  if (const std::string bad = validate(params); !bad.empty()) {
-    r.status = Status::InvalidParameters;
-    r.detail = bad;
-    return r;
-  }
   if (!object_.tracking()) {
     if (!inner_ && tp.acquisition == Acquisition::Manual) {
       r.status = Status::NoInnerPoint;

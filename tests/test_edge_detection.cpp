@@ -1,8 +1,10 @@
 // Edge detection: Canny, Sobel and "input" into a reusable edge map.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <opencv2/imgproc.hpp>
+#include <string>
 #include <vector>
 
 #include "edge_detection.hpp"
@@ -180,6 +182,19 @@ TEST(EdgeMap, OutOfRangeParametersAreClamped) {
   EXPECT_EQ(e.width, img.cols);
   p.blur = 1000;
   EXPECT_EQ(map.detect(view_of(img), p).width, img.cols);
+}
+
+TEST(EdgeParamsValidation, CannyThresholdsOutOfOrderAndNaNAreReported) {
+  EdgeParams p;
+  EXPECT_EQ(validate(p), "");
+  p.low = 200;
+  p.high = 100;
+  EXPECT_NE(validate(p).find("edge-threshold-low 200 is above edge-threshold-high 100"),
+            std::string::npos);
+  p.detector = EdgeDetector::Sobel;  // Sobel reads `low` only
+  EXPECT_EQ(validate(p), "");
+  p.low = std::nan("");
+  EXPECT_NE(validate(p), "");
 }
 
 }  // namespace

@@ -22,8 +22,8 @@ struct GstEnvironment : ::testing::Environment {
 };
 const auto* const kGstEnvironment = ::testing::AddGlobalTestEnvironment(new GstEnvironment);
 
-constexpr const char* kFormats[] = {"GRAY8", "I420", "YV12", "NV12", "NV21", "Y42B",
-                                    "Y444",  "BGRx", "RGBx", "xRGB", "xBGR", "BGRA",
+constexpr const char* kFormats[] = {"GRAY8", "I420", "YV12", "NV12", "NV21", "Y42B", "YUY2",
+                                    "UYVY",  "Y444", "BGRx", "RGBx", "xRGB", "xBGR", "BGRA",
                                     "RGBA",  "ARGB", "ABGR", "BGR",  "RGB"};
 
 // A bright disc on a darker background, as a GRAY8 frame with rows padded to 4 bytes.

@@ -32,8 +32,8 @@ struct GstEnvironment : ::testing::Environment {
 };
 const auto* const kGstEnvironment = ::testing::AddGlobalTestEnvironment(new GstEnvironment);
 
-constexpr const char* kFormats[] = {"GRAY8", "I420", "YV12", "NV12", "NV21", "Y42B",
-                                    "Y444",  "BGRx", "RGBx", "xRGB", "xBGR", "BGRA",
+constexpr const char* kFormats[] = {"GRAY8", "I420", "YV12", "NV12", "NV21", "Y42B", "YUY2",
+                                    "UYVY",  "Y444", "BGRx", "RGBx", "xRGB", "xBGR", "BGRA",
                                     "RGBA",  "ARGB", "ABGR", "BGR",  "RGB"};
 
 const std::set<std::string> kStatuses = {

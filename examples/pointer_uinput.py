@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""The tracked object as the system's pointer, the paper's "3D cursor-like input device": x and y
+move the pointer over the screen, a push toward the camera clicks. Through Linux's uinput, with
+Debian's python3-evdev; the new device is an absolute pointer (a tablet, to the desktop).
+
+    sudo pointer_uinput.py                     # the camera (/dev/video0), mirrored like a mirror
+    pointer_uinput.py --dry-run --generated    # print the events instead of sending them
+    pointer_uinput.py --dry-run --file clip.mp4
+
+Writing to /dev/uinput needs root or the uinput group. --dry-run opens no device: it prints each
+event it would send (its evdev name and value), and is what the tests run.
+"""
+import argparse
+import os
+import sys
+
+import gi
+
+gi.require_version('Gst', '1.0')
+from gi.repository import Gst  # noqa: E402
+from evdev import AbsInfo, UInput, ecodes  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cursor3d import (TRACKING, add_source_arguments, camera_problem,  # noqa: E402
+                      run_pipeline, source_pipeline)
+
+AXIS_MAX = 65535  # the device's absolute range on both axes; the desktop maps it to the screen
+
+
+class DryRun:
+    """Stands in for UInput: prints every event and every report."""
+
+    def write(self, kind, code, value):
+        name = ecodes.bytype[kind][code]
+        print(f'{ecodes.EV[kind]} {name if isinstance(name, str) else name[0]} {value}')
+
+    def syn(self):
+        print('SYN_REPORT')
+
+    def close(self):
+        pass
+
+
+def open_device(dry_run):
+    if dry_run:
+        return DryRun()
+    axis = AbsInfo(value=AXIS_MAX // 2, min=0, max=AXIS_MAX, fuzz=0, flat=0, resolution=0)
+    return UInput({ecodes.EV_ABS: [(ecodes.ABS_X, axis), (ecodes.ABS_Y, axis)],
+                   ecodes.EV_KEY: [ecodes.BTN_LEFT]}, name='projtrack 3D pointer')
+
+
+def to_axis(position):
+    """A position in [-1, 1] (the element's position-x or -y) to the device's range."""
+    return round((min(max(position, -1.0), 1.0) + 1) / 2 * AXIS_MAX)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    add_source_arguments(ap)
+    ap.add_argument('--dry-run', action='store_true', help='print the events, open no device')
+    ap.add_argument('--mirror', action=argparse.BooleanOptionalAction, default=None,
+                    help='move left when the object moves right in the picture (default: for '
+                         'a camera, which faces its user)')
+    args = ap.parse_args()
+    camera = not (args.file or args.generated)
+    if camera and (why := camera_problem(args.camera)):
+        print(f'pointer_uinput: {why}: use --file or --generated', file=sys.stderr)
+        return 2
+    mirror = camera if args.mirror is None else args.mirror
+    Gst.init(None)
+    pipeline, feed = source_pipeline(args, 'projtrack name=tracker', '! fakesink')
+    try:
+        device = open_device(args.dry_run)
+    except (OSError, PermissionError) as e:
+        print(f'pointer_uinput: cannot create a uinput device ({e}): run as root, or join the '
+              'uinput group; --dry-run prints the events instead', file=sys.stderr)
+        return 2
+    moved = [0]
+
+    def on_projtrack(s):
+        if s.get_string('status') not in TRACKING:  # lost, searching: the pointer stays
+            return
+        x = s.get_value('position-x')
+        device.write(ecodes.EV_ABS, ecodes.ABS_X, to_axis(-x if mirror else x))
+        device.write(ecodes.EV_ABS, ecodes.ABS_Y, to_axis(s.get_value('position-y')))
+        device.syn()
+        moved[0] += 1
+        if s.get_string('gesture') == 'push':  # a click: press and release
+            device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, 1)
+            device.syn()
+            device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, 0)
+            device.syn()
+
+    run_pipeline(pipeline, feed, on_projtrack)
+    device.close()
+    print(f'pointer_uinput: moved the pointer on {moved[0]} frames', file=sys.stderr)
+    return 0 if moved[0] else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())

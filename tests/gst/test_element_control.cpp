@@ -1,0 +1,288 @@
+// Starting, stopping and reading a track from an app, and how often the element speaks: the
+// track-point, track-box and reset action signals, start-box, current-inner-point-x/y, updates,
+// conflicting settings reported at once, YUY2/UYVY read like the planar formats, and what
+// gst-inspect-1.0 shows.
+#include <gst/check/gstharness.h>
+#include <gst/gst.h>
+#include <gst/video/video.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "method.hpp"
+
+namespace {
+
+struct GstEnvironment : ::testing::Environment {
+  void SetUp() override { gst_init(nullptr, nullptr); }
+};
+const auto* const kGstEnvironment = ::testing::AddGlobalTestEnvironment(new GstEnvironment);
+
+constexpr int kW = 160, kH = 120, kCx = 70, kCy = 64, kRadius = 30;
+
+std::string caps(const char* format) {
+  return "video/x-raw,format=" + std::string(format) + ",width=" + std::to_string(kW) +
+         ",height=" + std::to_string(kH) + ",framerate=30/1";
+}
+
+// A bright disc on a dark background, in `format` (videoconvert from GRAY8).
+GstBuffer* disc(const char* format = "GRAY8") {
+  GstBuffer* b = gst_buffer_new_allocate(nullptr, static_cast<gsize>(kW) * kH, nullptr);
+  GstMapInfo map;
+  gst_buffer_map(b, &map, GST_MAP_WRITE);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      map.data[y * kW + x] = std::hypot(x - kCx, y - kCy) <= kRadius ? 220 : 40;
+  gst_buffer_unmap(b, &map);
+  if (std::string(format) == "GRAY8") return b;
+  GstHarness* c = gst_harness_new("videoconvert");
+  gst_harness_set_src_caps_str(c, caps("GRAY8").c_str());
+  gst_harness_set_sink_caps_str(c, caps(format).c_str());
+  GstBuffer* out = gst_harness_push_and_pull(c, b);
+  gst_harness_teardown(c);
+  return out;
+}
+
+struct Frame {
+  std::vector<GstStructure*> messages;  // the projtrack messages this frame posted
+  std::vector<std::string> warnings;    // element warnings, their texts
+  bool meta = false;                    // the buffer carries the ROI meta
+  ~Frame() {
+    for (GstStructure* s : messages) gst_structure_free(s);
+  }
+  std::string status() const {
+    return messages.empty() ? "" : gst_structure_get_string(messages.back(), "status");
+  }
+  double get(const char* field) const {
+    double v = NAN;
+    if (!messages.empty()) gst_structure_get_double(messages.back(), field, &v);
+    return v;
+  }
+};
+
+class Control : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    h_ = gst_harness_new("projtrack");
+    ASSERT_NE(h_, nullptr) << "is GST_PLUGIN_PATH set to the build's gst folder?";
+    bus_ = gst_bus_new();
+    gst_element_set_bus(h_->element, bus_);
+    gst_harness_set_src_caps_str(h_, caps("GRAY8").c_str());
+    gst_util_set_object_arg(G_OBJECT(h_->element), "acquisition", "manual");
+  }
+  void TearDown() override {
+    gst_harness_teardown(h_);
+    gst_bus_set_flushing(bus_, TRUE);
+    gst_object_unref(bus_);
+  }
+  void push(Frame& f, GstBuffer* in = nullptr) {
+    GST_BUFFER_PTS(in ? in : (in = disc())) = pts_;
+    pts_ += GST_SECOND / 30;
+    ASSERT_EQ(gst_harness_push(h_, in), GST_FLOW_OK);
+    GstBuffer* out = gst_harness_pull(h_);
+    f.meta = gst_buffer_get_video_region_of_interest_meta(out) != nullptr;
+    gst_buffer_unref(out);
+    while (GstMessage* m = gst_bus_pop(bus_)) {
+      if (GST_MESSAGE_TYPE(m) == GST_MESSAGE_ELEMENT) {
+        f.messages.push_back(gst_structure_copy(gst_message_get_structure(m)));
+      } else if (GST_MESSAGE_TYPE(m) == GST_MESSAGE_WARNING) {
+        GError* e = nullptr;
+        gst_message_parse_warning(m, &e, nullptr);
+        f.warnings.push_back(e->message);
+        g_error_free(e);
+      }
+      gst_message_unref(m);
+    }
+  }
+  int int_property(const char* name) {
+    int v = 0;
+    g_object_get(h_->element, name, &v, nullptr);
+    return v;
+  }
+  GstHarness* h_ = nullptr;
+  GstBus* bus_ = nullptr;
+  GstClockTime pts_ = 0;
+};
+
+TEST_F(Control, TrackPointStartsInOneCallAndTheCurrentInnerPointFollowsTheObject) {
+  Frame before;
+  push(before);
+  EXPECT_EQ(before.status(), "no-inner-point");
+  EXPECT_EQ(int_property("current-inner-point-x"), -1);
+  // Seeded off-centre, inside the disc: the tracker moves its inner point toward the middle.
+  const int sx = kCx + kRadius / 2, sy = kCy;
+  g_signal_emit_by_name(h_->element, "track-point", sx, sy);
+  EXPECT_EQ(int_property("inner-point-x"), sx);  // the seed, as given
+  EXPECT_EQ(int_property("inner-point-y"), sy);
+  Frame f;
+  push(f);
+  EXPECT_EQ(f.status(), "ok");
+  EXPECT_NEAR(f.get("centroid-x"), kCx, 1.0);
+  const int cx = int_property("current-inner-point-x"), cy = int_property("current-inner-point-y");
+  EXPECT_LT(std::hypot(cx - kCx, cy - kCy), std::hypot(sx - kCx, sy - kCy)) << cx << "," << cy;
+  EXPECT_EQ(int_property("inner-point-x"), sx);  // still the seed
+}
+
+TEST_F(Control, TrackBoxAndStartBoxStartATrackAndResetStopsIt) {
+  for (bool by_signal : {true, false}) {
+    SCOPED_TRACE(by_signal ? "track-box" : "start-box");
+    if (by_signal)
+      g_signal_emit_by_name(h_->element, "track-box", kCx - 20, kCy - 20, 40, 40);
+    else  // as gst-launch-1.0 sets it
+      gst_util_set_object_arg(G_OBJECT(h_->element), "start-box", "<50, 44, 40, 40>");
+    GValue box = G_VALUE_INIT;
+    g_value_init(&box, GST_TYPE_ARRAY);
+    g_object_get_property(G_OBJECT(h_->element), "start-box", &box);
+    gchar* text = gst_value_serialize(&box);
+    EXPECT_STREQ(text, "< (int)50, (int)44, (int)40, (int)40 >");
+    g_free(text);
+    g_value_unset(&box);
+    EXPECT_EQ(int_property("inner-point-x"), -1);  // a box, not a point
+    Frame f;
+    push(f);
+    EXPECT_EQ(f.status(), "ok");
+    EXPECT_TRUE(f.meta);
+    EXPECT_NEAR(f.get("centroid-x"), kCx, 1.5);
+    EXPECT_NEAR(f.get("area"), M_PI * kRadius * kRadius, 0.15 * M_PI * kRadius * kRadius);
+    EXPECT_GE(int_property("current-inner-point-x"), 0);
+
+    g_signal_emit_by_name(h_->element, "reset");
+    Frame stopped;
+    push(stopped);
+    EXPECT_EQ(stopped.status(), "no-inner-point");
+    EXPECT_FALSE(stopped.meta);
+    EXPECT_EQ(int_property("current-inner-point-x"), -1);
+  }
+}
+
+TEST_F(Control, ABoxIsKeptAcrossARestart) {
+  g_signal_emit_by_name(h_->element, "track-box", kCx - 20, kCy - 20, 40, 40);
+  Frame f;
+  push(f);
+  ASSERT_EQ(f.status(), "ok");
+  gst_harness_set_src_caps_str(h_, caps("I420").c_str());  // the track restarts from the box
+  Frame again;
+  push(again, disc("I420"));
+  EXPECT_EQ(again.status(), "ok");
+  EXPECT_NEAR(again.get("centroid-x"), kCx, 1.5);
+}
+
+TEST_F(Control, UpdatesEveryFrameOnChangeOrNone) {
+  g_signal_emit_by_name(h_->element, "track-point", kCx, kCy);
+  const struct {
+    const char* updates;
+    std::vector<size_t> messages;  // per frame: the first acquires, the fifth is after a reset
+  } cases[] = {
+      {"every-frame", {1, 1, 1, 1, 1}}, {"on-change", {1, 0, 0, 0, 1}}, {"none", {0, 0, 0, 0, 0}}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.updates);
+    gst_util_set_object_arg(G_OBJECT(h_->element), "updates", c.updates);
+    g_signal_emit_by_name(h_->element, "track-point", kCx, kCy);
+    for (size_t i = 0; i < c.messages.size(); ++i) {
+      if (i == 4) g_signal_emit_by_name(h_->element, "reset");
+      Frame f;
+      push(f);
+      EXPECT_EQ(f.messages.size(), c.messages[i]) << "frame " << i;
+      EXPECT_EQ(f.meta, i < 4);  // the meta, whatever the messages
+    }
+  }
+  g_object_set(h_->element, "post-messages", FALSE, nullptr);
+  gst_util_set_object_arg(G_OBJECT(h_->element), "updates", "every-frame");
+  Frame quiet;
+  push(quiet);
+  EXPECT_TRUE(quiet.messages.empty());  // post-messages=false silences every mode
+}
+
+TEST_F(Control, ConflictingSettingsAreReportedAtOnceNotSearchedWith) {
+  gst_util_set_object_arg(G_OBJECT(h_->element), "acquisition", "auto");
+  const struct {
+    const char* model;
+    const char* property;
+    const char* value;
+    const char* says;
+  } cases[] = {{"edges", "rays", "1024", "rays^recursion"},
+               {"appearance", "rays", "1024", "rays^recursion"},
+               {"edges", "edge-threshold-low", "200", "edge-threshold-low 200"},
+               {"appearance", "edge-threshold-low", "200", "edge-threshold-low 200"}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(std::string(c.model) + " " + c.property);
+    gst_util_set_object_arg(G_OBJECT(h_->element), "object-model", c.model);
+    g_object_set(h_->element, "recursion", 4u, nullptr);
+    gst_util_set_object_arg(G_OBJECT(h_->element), c.property, c.value);
+    Frame first, second;
+    push(first);
+    EXPECT_EQ(first.status(), "invalid-parameters");  // not "searching"
+    ASSERT_EQ(first.warnings.size(), 1u);
+    EXPECT_NE(first.warnings[0].find(c.says), std::string::npos) << first.warnings[0];
+    push(second);
+    EXPECT_EQ(second.status(), "invalid-parameters");
+    EXPECT_TRUE(second.warnings.empty());  // said once, not on every frame
+    g_object_set(h_->element, "rays", 8u, "recursion", 2u, "edge-threshold-low", 50.0, nullptr);
+    Frame fixed;
+    push(fixed);
+    EXPECT_NE(fixed.status(), "invalid-parameters");
+    EXPECT_TRUE(fixed.warnings.empty());
+  }
+  // Sobel reads only the low threshold: no conflict.
+  gst_util_set_object_arg(G_OBJECT(h_->element), "edge-detector", "sobel");
+  g_object_set(h_->element, "edge-threshold-low", 200.0, nullptr);
+  Frame sobel;
+  push(sobel);
+  EXPECT_NE(sobel.status(), "invalid-parameters");
+}
+
+TEST_F(Control, PackedYuvIsTrackedAsThePlanarFormats) {
+  g_object_set(h_->element, "rays", 32u, nullptr);
+  std::vector<double> centroid_x, area;
+  for (const char* format : {"I420", "Y42B", "YUY2", "UYVY"}) {
+    gst_harness_set_src_caps_str(h_, caps(format).c_str());
+    g_signal_emit_by_name(h_->element, "track-point", kCx, kCy);
+    Frame f;
+    push(f, disc(format));
+    ASSERT_EQ(f.status(), "ok") << format;
+    centroid_x.push_back(f.get("centroid-x"));
+    area.push_back(f.get("area"));
+  }
+  for (size_t i = 1; i < area.size(); ++i) {
+    EXPECT_DOUBLE_EQ(centroid_x[i], centroid_x[0]);
+    EXPECT_DOUBLE_EQ(area[i], area[0]);
+  }
+}
+
+TEST(Inspect, PackageOriginContactAndBlurbsThatNameTheirMethods) {
+  GstElementFactory* factory = gst_element_factory_find("projtrack");
+  ASSERT_NE(factory, nullptr);
+  const std::string author = gst_element_factory_get_metadata(factory, "author");
+  EXPECT_TRUE(std::regex_search(author, std::regex("<[^@ ]+@[^> ]+>"))) << author;
+  const std::string description = gst_element_factory_get_metadata(factory, "description");
+  EXPECT_NE(description.find("GstVideoRegionOfInterestMeta"), std::string::npos);
+  EXPECT_NE(description.find("element message"), std::string::npos);
+  GstPlugin* plugin = gst_plugin_feature_get_plugin(GST_PLUGIN_FEATURE(factory));
+  EXPECT_STRNE(gst_plugin_get_origin(plugin), "Unknown package origin");
+  EXPECT_STRNE(gst_plugin_get_package(plugin), "");
+  gst_object_unref(plugin);
+
+  GstElement* e = gst_element_factory_create(factory, nullptr);
+  guint n = 0;
+  GParamSpec** specs = g_object_class_list_properties(G_OBJECT_GET_CLASS(e), &n);
+  const std::regex nick("[a-z]+(-[a-z]+)*-(ray-casting|filling)");
+  int naming = 0;
+  for (guint i = 0; i < n; ++i) {
+    if (G_PARAM_SPEC_VALUE_TYPE(specs[i]) == G_TYPE_STRING) continue;  // name, GstObject's
+    const std::string blurb = g_param_spec_get_blurb(specs[i]);
+    EXPECT_EQ(blurb.find("m of m-"), std::string::npos) << specs[i]->name;  // no paper notation
+    for (std::sregex_iterator m(blurb.begin(), blurb.end(), nick), end; m != end; ++m) {
+      EXPECT_TRUE(projtrack::method_from_name(m->str())) << specs[i]->name << ": " << m->str();
+      ++naming;
+    }
+  }
+  EXPECT_GE(naming, 8);  // the method-specific properties say which methods they tune
+  g_free(specs);
+  gst_object_unref(e);
+  gst_object_unref(factory);
+}
+
+}  // namespace

@@ -1,0 +1,130 @@
+#!/usr/bin/python3
+"""Regenerates the sample outputs that README.md and docs/ show, from runs: never typed.
+
+A sample in a Markdown file is a fenced block between two markers:
+
+    <!-- sample: NAME -->
+    ```
+    ...what the command NAME printed...
+    ```
+    <!-- end of sample -->
+
+and the overlay's pictures in docs/element/ are frames the element drew on opencv-doc's cup clip
+at 640x480 (when opencv-doc and the H.264 decoder are installed: ./run docs installs them).
+
+    tools/sample_outputs.py [--build build]          # rewrite the samples and pictures
+    tools/sample_outputs.py --check [--build build]  # run the commands; fail where a sample no
+                                                     # longer has the shape of what runs (every
+                                                     # number masked: numbers vary run to run)
+
+Run with the plugin on GST_PLUGIN_PATH (./run docs sets it).
+"""
+import argparse
+import gzip
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PY = '/usr/bin/python3'
+DOCS = ['README.md', 'docs/element.md']
+SAMPLE = re.compile(r'(<!-- sample: ([a-z0-9-]+) -->\n```[a-z]*\n)(.*?)(```\n<!-- end of sample -->)',
+                    re.S)
+
+
+def commands(out):
+    """NAME: (what the sample shows as typed, the command run in `out`, how many lines to keep)."""
+    ex = os.path.join(ROOT, 'examples')
+    return {
+        'demo': (None, [PY, f'{ex}/demo.py'], None),
+        'cursor3d': ('$ GST_PLUGIN_PATH=$PWD/build/gst examples/cursor3d.py --generated',
+                     [PY, f'{ex}/cursor3d.py', '--generated'], None),
+        'print-features': ('$ GST_PLUGIN_PATH=$PWD/build/gst examples/print_features.py | head -4',
+                           [PY, f'{ex}/print_features.py'], 4),
+        'read-roi-meta': ('$ GST_PLUGIN_PATH=$PWD/build/gst examples/read_roi_meta.py | head -3',
+                          [PY, f'{ex}/read_roi_meta.py'], 3),
+        'pointer-dry-run': ('$ GST_PLUGIN_PATH=$PWD/build/gst examples/pointer_uinput.py '
+                            '--dry-run --generated | head -7',
+                            [PY, f'{ex}/pointer_uinput.py', '--dry-run', '--generated'], 7),
+    }
+
+
+def run(name, out):
+    """The command's output, run in `out` as a user runs it in the source tree (relative paths
+    such as out/demo.webm land in `out`)."""
+    shown, cmd, keep = commands(out)[name]
+    text = subprocess.run(cmd, cwd=out, capture_output=True, text=True, check=True,
+                          timeout=600).stdout
+    lines = [line for line in re.split(r'\r?\n', text) if line.strip()]
+    lines = lines[:keep] if keep else lines
+    return '\n'.join(([shown] if shown else []) + lines) + '\n'
+
+
+def shape(text):
+    return re.sub(r'[-+]?\d+(\.\d+)?', 'N', text)
+
+
+def overlay_pictures(out, build):
+    """Frames of the cup clip with the overlay, at 640x480: tracking, and still searching."""
+    clip = '/usr/share/doc/opencv-doc/opencv4/html/cup.mp4.gz'
+    if not os.path.exists(clip) or shutil.which('gst-launch-1.0') is None:
+        print(f'sample_outputs: no {clip}: the overlay pictures are left as they are')
+        return
+    frames = os.path.join(out, 'overlay')
+    shutil.rmtree(frames, ignore_errors=True)
+    os.makedirs(frames)
+    with gzip.open(clip) as f, open(os.path.join(out, 'cup.mp4'), 'wb') as g:
+        g.write(f.read())
+    subprocess.run(['gst-launch-1.0', '-q', 'filesrc', f'location={out}/cup.mp4', '!', 'decodebin',
+                    '!', 'videoconvert', '!', 'videoscale', '!',
+                    'video/x-raw,format=I420,width=640,height=480', '!', 'projtrack', 'draw=true',
+                    '!', 'videoconvert', '!', 'pngenc', '!', 'multifilesink',
+                    f'location={frames}/%03d.png'], check=True, timeout=600)
+    dest = os.path.join(ROOT, 'docs', 'element')
+    os.makedirs(dest, exist_ok=True)
+    for frame, name in [(5, 'overlay-searching.png'), (150, 'overlay-tracking.png')]:
+        shutil.copy(os.path.join(frames, f'{frame:03d}.png'), os.path.join(dest, name))
+        print(f'sample_outputs: wrote docs/element/{name}')
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument('--build', default='build')
+    ap.add_argument('--check', action='store_true')
+    args = ap.parse_args()
+    out = os.path.join(ROOT, args.build, 'samples')
+    os.makedirs(out, exist_ok=True)
+    outputs, problems = {}, []
+    for doc in DOCS:
+        path = os.path.join(ROOT, doc)
+        text = open(path).read()
+
+        def replace(m):
+            name = m.group(2)
+            if name not in outputs:
+                outputs[name] = run(name, out)
+            if args.check and shape(outputs[name]) != shape(m.group(3)):
+                problems.append(f'{doc}: sample {name} differs from what runs now:\n'
+                                f'{m.group(3)}--- now:\n{outputs[name]}')
+            return m.group(1) + outputs[name] + m.group(4)
+        new = SAMPLE.sub(replace, text)
+        if not args.check and new != text:
+            open(path, 'w').write(new)
+            print(f'sample_outputs: updated {doc}')
+    unknown = set(commands(out)) - set(outputs)
+    if unknown:
+        problems.append(f'samples no document shows: {sorted(unknown)}')
+    if args.check:
+        for p in problems:
+            print(p)
+        print(f'{len(outputs)} samples checked, {len(problems)} out of date'
+              + (' (./run docs regenerates them)' if problems else ''))
+        return 1 if problems else 0
+    overlay_pictures(out, args.build)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
