@@ -108,6 +108,12 @@ double ObjectFinder::foreground_share(const Mask& s, int scale, const FinderPara
   return in > 0 ? differ / in : 0.0;
 }
 
+double ObjectFinder::foreground_share(const ColorView& frame, const Mask& s, int scale,
+                                      const FinderParams& p) {
+  load(frame, p);
+  return foreground_share(s, scale, p);
+}
+
 template <class Score>
 int ObjectFinder::best_region(Score&& score) {
   stats_.assign(static_cast<std::size_t>(regions_.count()) + 1, {});

@@ -44,6 +44,8 @@ class ObjectFinder {
   // The share of `s` (work coordinates at `scale`) that differs from the scene's background, as
   // the last search from motion or by colour learned it; 1 while it is not yet known.
   double foreground_share(const Mask& s, int scale, const FinderParams& p) const;
+  // The same on `frame`, a frame it has not searched (a tracked one).
+  double foreground_share(const ColorView& frame, const Mask& s, int scale, const FinderParams& p);
   // The colours of the frame's border strip on the last search from a seed or by motion:
   // counts per AppearanceModel colour bin, at scale().
   const std::vector<std::uint32_t>& border_colours() const { return border_counts_; }

@@ -1,6 +1,7 @@
 #include "tracker.hpp"
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <cstdio>
 
@@ -34,6 +35,7 @@ void Tracker::drop(bool keep_object) {
   box_.reset();
   last_good_.reset();
   refused_in_a_row_ = 0;
+  recent_refusals_ = 0;
   pointer_.interrupt();
   searched_ = 0;
   motion_.reset();
@@ -69,6 +71,7 @@ void Tracker::accept(const Features& f, double t, int width, int height, const T
   box_.reset();
   last_good_ = f;
   refused_in_a_row_ = 0;
+  recent_refusals_ <<= 1;
   pointer_.update(f, width, height, t, tp);
   r.status = f.status;
   r.features = f;
@@ -80,6 +83,7 @@ void Tracker::accept(const Features& f, double t, int width, int height, const T
 
 void Tracker::refuse(std::string why, const TrackerParams& tp, TrackResult& r) {
   ++refused_in_a_row_;
+  recent_refusals_ = (recent_refusals_ << 1) | 1u;
   r.status = Status::Lost;
   r.detail = std::move(why);
   // Only an accepted estimate is ever reported: with none yet, no features at all.
@@ -88,7 +92,14 @@ void Tracker::refuse(std::string why, const TrackerParams& tp, TrackResult& r) {
   r.pose = pointer_.pose();
   r.raw_pose = pointer_.raw();
   pointer_.interrupt();
-  if (refused_in_a_row_ > tp.patience) {
+  const int window = std::min(2 * tp.unsteady, 31);
+  const bool unsteady =
+      model_ == ObjectModelKind::Appearance && !seeded_ && tp.unsteady > 0 &&
+      refused_in_a_row_ == 1 &&
+      static_cast<int>(std::bitset<32>(recent_refusals_ & ((1u << window) - 1)).count()) >=
+          tp.unsteady;
+  if (unsteady) r.detail += "; refused on and off: an unsteady fragment, not an object";
+  if (refused_in_a_row_ > tp.patience || unsteady) {
     r.detail += "; the track is dropped";
     const bool appearance = model_ == ObjectModelKind::Appearance;
     drop(appearance);
@@ -418,24 +429,33 @@ TrackResult Tracker::track_appearance(const ColorView& frame, EdgeSource& edges,
     return r;
   }
   // An object found without the user's point that the scene's background holds — its silhouette
-  // the same as what the finder saw there while it searched, for `still_frames` frames in a row —
-  // is dropped: a static region that motion around it picked (the original system dropped an
-  // object that stopped moving). One the user pointed at is kept, whatever it is.
+  // the same as what the finder saw there while it searched, and its box not moving — is not
+  // reported as measured on that frame (held, as a refused estimate), and is dropped after
+  // `still_frames` such frames in a row: a static region that motion around it picked (the
+  // original system dropped an object that stopped moving). One the user pointed at is kept,
+  // whatever it is.
   if (!seeded_ && tp.still_frames > 0) {
-    bool background = finder_.foreground_share(silhouette_, object_.scale(), tp.finder) <
-                      tp.finder.min_foreground;
-    // And it does not move: almost none of its box changed since the last frame.
-    if (background && motion_.update(frame.luma, tp.motion, moved_)) {
+    // Almost none of its box changed since the last frame (compared on every frame, so that the
+    // previous one is the last frame)...
+    bool background = motion_.update(frame.luma, tp.motion, moved_);
+    if (background) {
       std::size_t inside = 0;
       for (const Point2i& q : moved_.points) inside += f.bbox.contains(q);
       background = static_cast<double>(inside) * moved_.step * moved_.step <
                    tp.finder.min_moving * f.bbox.width * f.bbox.height;
     }
+    // ... and on this frame its silhouette is what the background holds there.
+    background = background && finder_.foreground_share(frame, silhouette_, object_.scale(),
+                                                        tp.finder) < tp.finder.min_foreground;
     still_ = background ? still_ + 1 : 0;
     if (still_ >= tp.still_frames) {
       still_ = 0;
       refused_in_a_row_ = tp.patience;  // dropped now
       refuse("the object is part of the scene's background: a static region", tp, r);
+      return r;
+    }
+    if (still_ > 0) {
+      refuse("the object does not move and looks like the scene's background", tp, r);
       return r;
     }
   }

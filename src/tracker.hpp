@@ -96,6 +96,7 @@ class Tracker {
   std::optional<Features> last_good_;
   Point2d velocity_;  // of the centroid between the last two accepted frames, px per frame
   int refused_in_a_row_ = 0;
+  std::uint32_t recent_refusals_ = 0;  // a bit per frame since the track started, newest lowest
   Pointer pointer_;
   ObjectModelKind model_ = ObjectModelKind::Appearance;
 

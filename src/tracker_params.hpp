@@ -48,6 +48,11 @@ struct TrackerParams {
   double max_area = 0.5;
   double min_area = 0.0005;
   int patience = 5;  // refused frames in a row tolerated; the next one drops the track
+  // Appearance model: an object found without the user's point whose estimates are refused on
+  // `unsteady` of the last 2·`unsteady` frames, accepted in between, is dropped: what alternates
+  // between accepted and refused is a fragment the estimates cannot hold (a walker's silhouette
+  // falling apart), not an object. 0: never.
+  int unsteady = 3;
 
   // Edges model: while tracking, edges are needed only around the object: the last box, and that
   // box moved by the object's last motion, grown by this share of its larger side (at least
@@ -61,9 +66,10 @@ struct TrackerParams {
   // After a loss the object is searched by its colours; after this many frames without finding
   // it, its colours are forgotten and Auto acquisition looks for any moving object.
   int forget_after = 150;
-  // An object found without the user's point is dropped after `still_frames` frames in a row
-  // in which its silhouette is the scene's background (FinderParams::min_foreground) and its box
-  // hardly changes (FinderParams::min_moving); 0: never.
+  // An object found without the user's point is held (reported lost) on a frame in which its
+  // silhouette is the scene's background (FinderParams::min_foreground) and its box hardly
+  // changes (FinderParams::min_moving), and dropped after `still_frames` such frames in a row;
+  // 0: never.
   int still_frames = 4;
 
   bool smoothing = true;  // One Euro filter on x, y and depth

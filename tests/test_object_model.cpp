@@ -159,6 +159,29 @@ TEST(ObjectModel, NoSeedTheMovingObjectAndNeverTheStaticBackground) {
   EXPECT_TRUE(found);
 }
 
+TEST(ObjectModel, NoSeedAnObjectThatStopsIsStillTrackedAndNotTheBackground) {
+  // Found by motion, the object stops where the scene's background never had it: it differs from
+  // the background on this frame, so it stays measured (a still object is no static region).
+  Tracker t;
+  Scene s;
+  s.textured = true;
+  s.arm = false;
+  s.centre = {80, 120};
+  int found_at = -1;
+  for (int i = 0; i < 50; ++i) {
+    // Still while the background is learned, then moves, then stands still.
+    if (i >= 12 && i < 27) s.centre.x = 80 + 6.0 * (i - 11);
+    s.seed = i;
+    const Frame f = render(s);
+    const TrackResult r =
+        t.track(f.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, {});
+    if (found_at < 0 && has_features(r.status)) found_at = i;
+    if (found_at >= 0) expect_close(r, f, 4, 0.15, "frame " + std::to_string(i));
+  }
+  EXPECT_GE(found_at, 0);
+  EXPECT_LT(found_at, 27);  // found while it moved, then held 23 still frames
+}
+
 TEST(ObjectModel, FoundAgainByItsColoursWithDepthGoingOn) {
   Tracker t;
   t.seed({160, 120});
