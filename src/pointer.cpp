@@ -28,7 +28,7 @@ void Pointer::update(const Features& f, int width, int height, double t, const T
     pose_ = raw_;
   }
   push_.set_params(tp.push);
-  pushed_ = push_.update(raw_.depth, t);
+  pushed_ = push_.update(raw_.depth, f.bbox.width, f.bbox.height, t);
 }
 
 }  // namespace projtrack

@@ -40,6 +40,29 @@ TEST(PushDetector, TwoPushesAreTwo) {
   EXPECT_EQ(pushes(d, depth, 4.0), 2);
 }
 
+// Feeds a box of 100 × 100 px scaled by `sx`(t), `sy`(t), and the depth of its area, at 30 fps.
+template <class ScaleX, class ScaleY>
+int box_pushes(ScaleX sx, ScaleY sy, double seconds) {
+  PushDetector d;
+  int count = 0;
+  for (int i = 0; i < seconds * 30; ++i) {
+    const double t = i / 30.0, w = 100 * sx(t), h = 100 * sy(t);
+    count += d.update(std::sqrt(w * h) / 100, w, h, t);
+  }
+  return count;
+}
+
+TEST(PushDetector, APushScalesTheWholeBoxAWidthAloneIsNone) {
+  const auto scaled = [](double t) { return 1.0 + bump(t, 1.0, 0.4, 0.3); };
+  const auto same = [](double) { return 1.0; };
+  // Nearing the camera scales both sides: a push.
+  EXPECT_EQ(box_pushes(scaled, scaled, 3.0), 1);
+  // Legs opening widen the box, its height stays: the same depth bump is no push.
+  const auto wider = [](double t) { return 1.0 + bump(t, 1.0, 0.4, 0.7); };
+  EXPECT_EQ(box_pushes(wider, same, 3.0), 0);
+  EXPECT_EQ(box_pushes(same, wider, 3.0), 0);
+}
+
 TEST(PushDetector, MovingCloserAndStayingIsNotAPush) {
   PushDetector d;
   EXPECT_EQ(pushes(
@@ -70,6 +93,28 @@ TEST(PushDetector, SmallAndNoisyChangesAreNotPushes) {
   EXPECT_EQ(pushes(
                 d, [](double t) { return 1.0 + bump(t, 1.0, 0.4, 0.06); }, 3.0, 0.02),
             0);
+}
+
+TEST(PushDetector, NoPushBeforeTheRestingDepthIsKnown) {
+  PushDetector d;  // a push starting 0.1 s into the track
+  EXPECT_EQ(pushes(
+                d, [](double t) { return 1.0 + bump(t, 0.1, 0.3, 0.3); }, 2.0),
+            0);
+}
+
+TEST(PushDetector, ANoisyTrackNeedsAClearerPush) {
+  // Depth jittering by 5 % at rest, a 12 % bump: a push by the threshold alone, within the
+  // track's own noise once the jitter counts.
+  const auto count = [](double jitter_factor) {
+    PushDetector d;
+    PushDetector::Params p;
+    p.jitter_factor = jitter_factor;
+    d.set_params(p);
+    return pushes(
+        d, [](double t) { return 1.0 + bump(t, 2.0, 0.4, 0.12); }, 4.0, 0.05);
+  };
+  EXPECT_GE(count(0.0), 1);
+  EXPECT_EQ(count(PushDetector::Params{}.jitter_factor), 0);
 }
 
 }  // namespace
