@@ -1,5 +1,7 @@
 #include "font.hpp"
 
+#include <utility>
+
 namespace projtrack::gst {
 
 namespace {
@@ -112,6 +114,30 @@ constexpr std::array<Glyph, kGlyphs> kGlyphTable = parse_sheet();
 
 const Glyph& glyph(char c) {
   return kGlyphTable[c >= kFirst && c <= kLast ? c - kFirst : '?' - kFirst];
+}
+
+std::string drawable(std::string_view utf8) {
+  static constexpr std::pair<std::string_view, std::string_view> kLookAlikes[] = {
+      {"\u00d7", "x"},  {"\u2013", "-"}, {"\u2014", "-"}, {"\u2264", "<="},
+      {"\u2265", ">="}, {"\u00b7", "."}, {"\u00b2", "2"}, {"\u00b5", "u"}};
+  std::string out;
+  out.reserve(utf8.size());
+  for (std::size_t i = 0; i < utf8.size();) {
+    const auto byte = static_cast<unsigned char>(utf8[i]);
+    if (byte < 0x80) {
+      out += utf8[i++];
+      continue;
+    }
+    // A multi-byte character: its length from the lead byte (a stray byte counts as one).
+    const std::size_t n = byte >= 0xF0 ? 4 : byte >= 0xE0 ? 3 : byte >= 0xC0 ? 2 : 1;
+    const std::string_view c = utf8.substr(i, n);
+    std::string_view ascii = "?";
+    for (const auto& [from, to] : kLookAlikes)
+      if (c == from) ascii = to;
+    out += ascii;
+    i += c.size();
+  }
+  return out;
 }
 
 }  // namespace projtrack::gst

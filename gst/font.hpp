@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
+#include <string_view>
 
 namespace projtrack::gst {
 
@@ -14,5 +16,9 @@ using Glyph = std::array<std::uint8_t, kGlyphHeight>;
 
 // The glyph of `c`; '?' for a character outside printable ASCII (' ' to '~').
 const Glyph& glyph(char c);
+
+// `utf8` as the font can draw it: the signs the tracker's messages use (×, –, —, ≤, ≥, ·, ², µ)
+// by their ASCII look-alikes, any other character outside ASCII by one '?' (not one per byte).
+std::string drawable(std::string_view utf8);
 
 }  // namespace projtrack::gst

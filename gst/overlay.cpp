@@ -87,6 +87,7 @@ class Painter {
     line({p.x, p.y - radius}, {p.x, p.y + radius}, c);
   }
   // `text` from its top-left corner, each font pixel a scale × scale square.
+  // `text` in printable ASCII (see drawable()).
   void text(int left, int top, int scale, const std::string& text, Rgb c) {
     for (std::size_t i = 0; i < text.size(); ++i) {
       const Glyph& g = glyph(text[i]);
@@ -267,7 +268,7 @@ void draw_overlay(GstVideoFrame* frame, Method method, const TrackResult& result
   const std::vector<std::string> text = overlay_text(result, method);
   std::size_t status_lines = 0;
   for (std::size_t i = 0; i < text.size(); ++i) {
-    wrap(text[i], columns, lines);
+    wrap(drawable(text[i]), columns, lines);  // the font's characters, so widths count right
     if (i == 0) status_lines = lines.size();
   }
   std::size_t longest = 0;

@@ -141,6 +141,18 @@ TEST(Overlay, EveryGlyphIsDistinct) {
   EXPECT_EQ(glyph('\n'), glyph('?'));  // outside printable ASCII
 }
 
+TEST(Overlay, SignsOutsideAsciiAreDrawnByLookAlikes) {
+  using projtrack::gst::drawable;
+  EXPECT_EQ(drawable("the area shrank to 0.40\u00d7 of the last frame's"),
+            "the area shrank to 0.40x of the last frame's");
+  EXPECT_EQ(drawable("\u2264 5 px \u2013 \u00b5s"), "<= 5 px - us");
+  EXPECT_EQ(drawable("caf\u00e9 \U0001F600!"), "caf? ?!");  // one '?' a character
+  EXPECT_EQ(drawable(std::string("\xC3", 1)), "?");         // a cut sequence
+  // Every character drawable() gives has a glyph of its own, not the '?' of unknown ones.
+  for (char c : drawable("\u00d7\u2013\u2014\u2264\u2265\u00b7\u00b2\u00b5"))
+    EXPECT_NE(glyph(c), glyph('?')) << c;
+}
+
 TEST(Overlay, TheTextReadsBackInEveryFormatAt640x480) {
   const int w = 640, h = 480;
   const TrackResult r = lost_result();
