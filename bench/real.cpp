@@ -65,6 +65,26 @@ struct Clip {
     for (GstBuffer* b : rgb_buffers) gst_buffer_unref(b);
   }
   cv::Mat luma(int i) const { return i420[i].rowRange(0, height); }
+  // The scene's background, for the static-region judgement: the per-pixel median luma of up to
+  // 99 frames spread over the clip (people walk through it; the lawn and the signs stay).
+  const cv::Mat& median_luma() const {
+    if (median_.empty() && !i420.empty()) {
+      const std::size_t n = std::min<std::size_t>(99, i420.size());
+      std::vector<cv::Mat> samples;
+      for (std::size_t k = 0; k < n; ++k)
+        samples.push_back(luma(static_cast<int>(k * i420.size() / n)));
+      median_.create(height, width, CV_8UC1);
+      std::vector<std::uint8_t> v(n);
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+          for (std::size_t k = 0; k < n; ++k) v[k] = samples[k].at<std::uint8_t>(y, x);
+          std::nth_element(v.begin(), v.begin() + n / 2, v.end());
+          median_.at<std::uint8_t>(y, x) = v[n / 2];
+        }
+    }
+    return median_;
+  }
+  mutable cv::Mat median_;
   std::string caps(const char* format) const {
     return raw_caps(format, width, height, fps_n, fps_d);
   }
@@ -460,6 +480,18 @@ double moving_share(const Clip& c, int i, const Rect& box) {
   return static_cast<double>(cv::countNonZero(diff > 20)) / r.area();
 }
 
+// The share of `box`'s pixels on frame `i` that differ from the clip's median frame by more than
+// 20 grey levels: near 0 on a piece of the scene's background (a sign, the lawn), high on what
+// passes through it.
+double scene_share(const Clip& c, int i, const Rect& box) {
+  const cv::Rect r =
+      cv::Rect(box.x, box.y, box.width, box.height) & cv::Rect(0, 0, c.width, c.height);
+  if (r.area() <= 0) return 0;
+  cv::Mat diff;
+  cv::absdiff(c.luma(i)(r), c.median_luma()(r), diff);
+  return static_cast<double>(cv::countNonZero(diff > 20)) / r.area();
+}
+
 std::string csv_text(const std::string& s) {
   std::string out = "\"";
   for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
@@ -470,11 +502,12 @@ void write_row(const Clip& c, const std::string& tracker, const std::string& gro
                const Report& r) {
   std::fprintf(
       runs_csv,
-      "%s,%s,%s,%d,%s,%d,%.3f,%.3f,%.1f,%d,%d,%d,%d,%d,%.4f,%.4f,%.4f,%d,%d,%.1f,%.4f,%s\n",
+      "%s,%s,%s,%d,%s,%d,%.3f,%.3f,%.1f,%d,%d,%d,%d,%d,%.4f,%.4f,%.4f,%d,%d,%.1f,%.4f,%.4f,%s\n",
       c.name.c_str(), csv_text(tracker).c_str(), group.c_str(), i, r.status.c_str(), r.has_features,
       r.centroid.x, r.centroid.y, r.area, r.box.x, r.box.y, r.box.width, r.box.height, r.has_pose,
       r.position_x, r.position_y, r.depth, r.push, r.acquired, r.us,
-      r.has_features ? moving_share(c, i, r.box) : -1.0, csv_text(r.detail).c_str());
+      r.has_features ? moving_share(c, i, r.box) : -1.0,
+      r.has_features ? scene_share(c, i, r.box) : -1.0, csv_text(r.detail).c_str());
 }
 
 std::string seed_props(const Clip& c) {
@@ -725,10 +758,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "projtrack-real: cannot write in %s\n", out.c_str());
     return 1;
   }
-  std::fprintf(runs_csv,
-               "clip,tracker,group,frame,status,measured,centroid_x,centroid_y,area,x,y,width,"
-               "height,has_pose,position_x,position_y,depth,push,acquired,us,moving_share,"
-               "detail\n");
+  std::fprintf(
+      runs_csv,
+      "clip,tracker,group,frame,status,measured,centroid_x,centroid_y,area,x,y,width,"
+      "height,has_pose,position_x,position_y,depth,push,acquired,us,moving_share,scene_share,"
+      "detail\n");
   std::fprintf(speed_csv, "clip,resolution,what,median_us,frames\n");
 
   long steps = 0;

@@ -33,7 +33,8 @@ except ImportError:  # contact sheets need python3-opencv; the tables do not
 TRACKING = {"ok", "reached-border", "covers-frame"}
 WITHIN = 0.25        # a frame is kept when the centroid is within this × √(true area)
 AREA_TOLERANCE = 0.25
-STATIC_SHARE = 0.005  # a reported box with fewer changed pixels than this is a static region
+STILL_SHARE = 0.005  # a reported box with fewer pixels changed over two frames is unchanged
+SCENE_SHARE = 0.2  # and with fewer pixels apart from the clip's median frame, the background
 README_BEGIN = "<!-- real-footage summary: written by bench/real_report.py -->"
 README_END = "<!-- end of real-footage summary -->"
 
@@ -48,7 +49,7 @@ def load_runs(data_dir):
                       "acquired"):
                 r[k] = int(r[k])
             for k in ("centroid_x", "centroid_y", "area", "position_x", "position_y", "depth",
-                      "us", "moving_share"):
+                      "us", "moving_share", "scene_share"):
                 r[k] = float(r[k])
             runs.setdefault((r["clip"], r["tracker"]), []).append(r)
     for rows in runs.values():
@@ -106,7 +107,9 @@ def metrics(rows, truth):
     m["reacquisitions"] = max(0, len(acquired) - 1)
     m["pushes"] = sum(r["push"] for r in rows)
     m["ms"] = statistics.median(r["us"] for r in rows) / 1000 if rows else math.nan
-    static = [r for r in rows if r["measured"] and 0 <= r["moving_share"] < STATIC_SHARE]
+    still = [r for r in rows if r["measured"] and 0 <= r["moving_share"] < STILL_SHARE]
+    static = [r for r in still if 0 <= r["scene_share"] < SCENE_SHARE]
+    m["still"] = len(still)
     m["static"] = len(static)
     m["static_frames"] = [r["frame"] for r in static]
     if truth is None:
@@ -368,17 +371,22 @@ class Report:
         self.w()
 
     def static_table(self):
-        self.w("| clip | run | frames reporting an object | of them, a static region |")
-        self.w("|---|---|---|---|")
+        self.w("| clip | run | frames reporting an object | of them, unchanged over two frames "
+               "| of those, the scene's background: a static region |")
+        self.w("|---|---|---|---|---|")
         for clip in self.clips:
             for name in self.trackers[clip]:
                 if self.group(clip, name) != "projtrack no seed":
                     continue
                 m = self.m[(clip, name)]
-                self.w(f"| {clip} | {name} | {m['tracked']} | {m['static']} |")
+                self.w(f"| {clip} | {name} | {m['tracked']} | {m['still']} | {m['static']} |")
         self.w()
-        self.w(f"A static region: a reported box in which fewer than {100 * STATIC_SHARE:.1f} % "
-               "of the pixels changed by more than 20 grey levels over the last two frames.")
+        self.w(f"Unchanged: a reported box in which fewer than {100 * STILL_SHARE:.1f} % of the "
+               "pixels changed by more than 20 grey levels over the last two frames (a held "
+               "object at rest, a walker's planted foot, or the background). A static region: "
+               f"such a box of which fewer than {100 * SCENE_SHARE:.0f} % of the pixels differ by "
+               "more than 20 grey levels from the clip's median frame (the scene without what "
+               "passes through it), so the box shows the background.")
         self.w()
 
     def speed_section(self):

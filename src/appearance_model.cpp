@@ -65,7 +65,7 @@ void AppearanceModel::learn(const ColorView& image, Point2i origin, const Mask& 
 void AppearanceModel::rebuild() {
   // Lighting moves a colour along luma more than along chroma: counts spread to the next luma
   // bin (by half), never across chroma, so a neutral and a reddish dark stay apart.
-  const int step = chroma_ ? 1024 : 1, bins = chroma_ ? kBins : 64;
+  const int step = chroma_ ? kLumaStep : 1, bins = chroma_ ? kBins : 64;
   const auto smoothed = [&](const std::vector<float>& h, int b) {
     double s = h[b];
     if (b - step >= 0) s += 0.5 * h[b - step];

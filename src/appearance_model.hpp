@@ -15,12 +15,14 @@ namespace projtrack {
 
 class AppearanceModel {
  public:
-  // Colour bins: 8 of luma (32 levels each) × 32 of Cr × 32 of Cb (8 levels each), so that a
+  // Colour bins: 16 of luma (16 levels each) × 32 of Cr × 32 of Cb (8 levels each), so that a
   // dark neutral object and a dark reddish hand fall apart; gray frames use 64 bins of luma alone.
-  static constexpr int kBins = 8 * 32 * 32;
+  static constexpr int kBins = 16 * 32 * 32;
+  // Added to (xor'ed with) a colour bin, the bin of the same chroma one luma step away.
+  static constexpr int kLumaStep = 1 << 10;
 
   static int bin(std::uint8_t y, std::uint8_t u, std::uint8_t v) {
-    return ((y >> 5) << 10) | ((v >> 3) << 5) | (u >> 3);
+    return ((y >> 4) << 10) | ((v >> 3) << 5) | (u >> 3);
   }
 
   // Forgets everything.

@@ -43,8 +43,13 @@ void ObjectFinder::foreground(const FinderParams& p) {
     }
   }
   const double seen = std::max(3.0, p.border_share * static_cast<double>(strip_pixels));
+  // Seen on the border in luma steps of 32, a bin with its partner: lighting varies a scene's
+  // colours along luma more than the object model's fine bins, which tell a dimly lit object
+  // from the hand, and a colour of the wall seen a shade lighter is still the wall's.
+  const int partner = f.has_chroma() ? AppearanceModel::kLumaStep : 0;
   background_.resize(AppearanceModel::kBins);
-  for (int b = 0; b < AppearanceModel::kBins; ++b) background_[b] = border_counts_[b] >= seen;
+  for (int b = 0; b < AppearanceModel::kBins; ++b)
+    background_[b] = border_counts_[b] + (partner ? border_counts_[b ^ partner] : 0) >= seen;
   candidates_.reset({0, 0, w, h});
   for (int y = 0; y < h; ++y) {
     std::uint8_t* c = candidates_.row(y);
