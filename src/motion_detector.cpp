@@ -14,6 +14,7 @@ bool MotionDetector::update(const ImageView& gray, const Params& p, Motion& out)
   const int cols = (gray.width + step - 1) / step, rows = (gray.height + step - 1) / step;
   const bool comparable = gray.width == width_ && gray.height == height_ && step == step_;
   previous_.resize(static_cast<std::size_t>(cols) * rows);
+  histogram_.fill(0);
   double sx = 0, sy = 0;
   for (int r = 0; r < rows; ++r) {
     const std::uint8_t* row = gray.row(r * step);
@@ -26,8 +27,17 @@ bool MotionDetector::update(const ImageView& gray, const Params& p, Motion& out)
         sy += r * step;
       }
       prev[c] = v;
+      ++histogram_[v];
     }
   }
+  // The 2nd and 98th percentiles of the samples.
+  const std::uint64_t n = static_cast<std::uint64_t>(cols) * rows, tail = n / 50;
+  int lo = 0, hi = 255;
+  for (std::uint64_t below = 0; lo < 255 && below + histogram_[lo] <= tail; ++lo)
+    below += histogram_[lo];
+  for (std::uint64_t above = 0; hi > 0 && above + histogram_[hi] <= tail; --hi)
+    above += histogram_[hi];
+  spread_ = std::max(0, hi - lo);
   width_ = gray.width;
   height_ = gray.height;
   step_ = step;

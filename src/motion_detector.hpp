@@ -2,6 +2,7 @@
 // picked the object to track this way: once enough of the frame moves, the moving region is it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -26,11 +27,15 @@ class MotionDetector {
   // Compares `gray` with the previous frame and keeps it for the next call. Returns false (and
   // no motion) on the first frame, after reset() or when the frame size changed.
   bool update(const ImageView& gray, const Params& p, Motion& out);
-  void reset() { width_ = height_ = 0; }
+  void reset() { width_ = height_ = spread_ = 0; }
+  // How many grey levels the last frame's samples span, from the 2nd to the 98th percentile (0
+  // before the first frame): a dim scene spans fewer, and its changes are as much smaller.
+  int spread() const { return spread_; }
 
  private:
   std::vector<std::uint8_t> previous_;  // the sampled previous frame
-  int width_ = 0, height_ = 0, step_ = 0;
+  int width_ = 0, height_ = 0, step_ = 0, spread_ = 0;
+  std::array<std::uint32_t, 256> histogram_{};
 };
 
 }  // namespace projtrack

@@ -81,6 +81,28 @@ void Tracker::accept(const Features& f, double t, int width, int height, const T
   r.push = pointer_.pushed();
 }
 
+namespace {
+
+double contrast(int spread, const TrackerParams& tp) {
+  if (spread <= 0 || !(tp.full_contrast > 0)) return 1.0;
+  return std::clamp(spread / tp.full_contrast, 1.0 / 3, 1.0);
+}
+
+}  // namespace
+
+MotionDetector::Params Tracker::motion_params(const TrackerParams& tp) const {
+  MotionDetector::Params p = tp.motion;
+  p.threshold = static_cast<int>(std::lround(p.threshold * contrast(motion_.spread(), tp)));
+  return p;
+}
+
+FinderParams Tracker::finder_params(const TrackerParams& tp) const {
+  FinderParams p = tp.finder;
+  p.background_change =
+      static_cast<int>(std::lround(p.background_change * contrast(motion_.spread(), tp)));
+  return p;
+}
+
 void Tracker::refuse(std::string why, const TrackerParams& tp, TrackResult& r) {
   ++refused_in_a_row_;
   recent_refusals_ = (recent_refusals_ << 1) | 1u;
@@ -206,6 +228,7 @@ TrackResult Tracker::track_edges(const ColorView& frame, EdgeSource& edges, doub
 bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const TrackerParams& tp,
                           bool& resumed, std::string& why) {
   const int w = frame.luma.width, h = frame.luma.height;
+  const FinderParams fp = finder_params(tp);
   Point2i seed{w / 2, h / 2};
   bool found = false;
   resumed = false;
@@ -215,14 +238,14 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
       why = "the inner point lies outside the frame";
       return false;
     }
-    found = box_ ? finder_.from_box(frame, *box_, tp.finder, first_, why)
-                 : finder_.from_seed(frame, seed, tp.finder, first_, why);
+    found = box_ ? finder_.from_box(frame, *box_, fp, first_, why)
+                 : finder_.from_seed(frame, seed, fp, first_, why);
   } else if (tp.acquisition == Acquisition::Center) {
-    found = finder_.from_seed(frame, seed, tp.finder, first_, why);
+    found = finder_.from_seed(frame, seed, fp, first_, why);
     if (!found) why = "at the frame centre: " + why;
   } else {  // Auto: an object lost before by its colours; else whatever moves
     moved_before_.swap(moved_.points);  // the last frame's changes, for the check below
-    if (!motion_.update(frame.luma, tp.motion, moved_)) {
+    if (!motion_.update(frame.luma, motion_params(tp), moved_)) {
       why = "waiting for a second frame to compare";
       return false;
     }
@@ -240,10 +263,10 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
     ++searched_;
     if (object_.knows_colours()) {
       found = finder_.from_model(frame, object_.appearance(), moved_, lost_area_, tp.leak_factor,
-                                 lost_centroid_, tp.finder, first_, seed, why);
+                                 lost_centroid_, fp, first_, seed, why);
       resumed = found;
     } else {
-      found = finder_.from_motion(frame, moved_, tp.finder, first_, seed, why);
+      found = finder_.from_motion(frame, moved_, fp, first_, seed, why);
       // It moved on the last frame too: a passer-by that crossed a static region for one frame
       // does not make that region an object.
       if (found) {
@@ -252,7 +275,7 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
         std::size_t inside = 0;
         for (const Point2i& q : moved_before_) inside += box.contains(q);
         if (static_cast<double>(inside) * moved_.step * moved_.step <
-            0.5 * tp.finder.min_moving * box.width * box.height) {
+            0.5 * fp.min_moving * box.width * box.height) {
           found = false;
           why = "what moves there did not move on the last frame: waiting";
         }
@@ -272,8 +295,7 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
   // An object found by motion alone must not be the background: a static region that a
   // passer-by's colours joined is left alone, whatever moved around it.
   if (!inner_ && !resumed &&
-      finder_.foreground_share(silhouette_, object_.scale(), tp.finder) <
-          tp.finder.min_foreground) {
+      finder_.foreground_share(silhouette_, object_.scale(), fp) < fp.min_foreground) {
     object_.reset();
     why = "what moved there is the background (a static region): left alone";
     return false;
@@ -437,16 +459,17 @@ TrackResult Tracker::track_appearance(const ColorView& frame, EdgeSource& edges,
   if (!seeded_ && tp.still_frames > 0) {
     // Almost none of its box changed since the last frame (compared on every frame, so that the
     // previous one is the last frame)...
-    bool background = motion_.update(frame.luma, tp.motion, moved_);
+    const FinderParams fp = finder_params(tp);
+    bool background = motion_.update(frame.luma, motion_params(tp), moved_);
     if (background) {
       std::size_t inside = 0;
       for (const Point2i& q : moved_.points) inside += f.bbox.contains(q);
       background = static_cast<double>(inside) * moved_.step * moved_.step <
-                   tp.finder.min_moving * f.bbox.width * f.bbox.height;
+                   fp.min_moving * f.bbox.width * f.bbox.height;
     }
     // ... and on this frame its silhouette is what the background holds there.
-    background = background && finder_.foreground_share(frame, silhouette_, object_.scale(),
-                                                        tp.finder) < tp.finder.min_foreground;
+    background = background && finder_.foreground_share(frame, silhouette_, object_.scale(), fp) <
+                                   fp.min_foreground;
     still_ = background ? still_ + 1 : 0;
     if (still_ >= tp.still_frames) {
       still_ = 0;

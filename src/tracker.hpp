@@ -88,6 +88,10 @@ class Tracker {
   void refuse(std::string why, const TrackerParams& tp, TrackResult& r);
   // Forgets where the object is; `keep_object`: its colours and its first area stay known.
   void drop(bool keep_object);
+  // tp's motion and finder parameters with their grey-level thresholds scaled to the scene's
+  // contrast (TrackerParams::full_contrast), as the last frame compared showed it.
+  MotionDetector::Params motion_params(const TrackerParams& tp) const;
+  FinderParams finder_params(const TrackerParams& tp) const;
 
   EdgeMap edge_map_;
   std::array<std::unique_ptr<Estimator>, kMethodCount> estimators_;  // made on first use

@@ -63,6 +63,11 @@ struct TrackerParams {
   // Appearance model: how it finds, segments and learns the object.
   ObjectModelParams object;
   FinderParams finder;
+  // The grey-level thresholds of motion (MotionDetector::Params::threshold) and of the
+  // background (FinderParams::background_change) hold for a scene whose luma spans this many
+  // levels (2nd to 98th percentile); in a dimmer one, whose changes are as much smaller, they
+  // shrink in proportion, to a third at most.
+  double full_contrast = 190;
   // After a loss the object is searched by its colours; after this many frames without finding
   // it, its colours are forgotten and Auto acquisition looks for any moving object.
   int forget_after = 150;

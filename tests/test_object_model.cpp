@@ -182,6 +182,53 @@ TEST(ObjectModel, NoSeedAnObjectThatStopsIsStillTrackedAndNotTheBackground) {
   EXPECT_LT(found_at, 27);  // found while it moved, then held 23 still frames
 }
 
+// `f` in a dim light: luma at `gain` of its range above black, chroma at 80 % of its swing.
+Frame dimmed(Frame f, double gain) {
+  const int n = f.truth.cols * f.truth.rows;
+  for (int i = 0; i < n * 3 / 2; ++i) {
+    std::uint8_t& v = f.i420.data[i];
+    v = static_cast<std::uint8_t>(
+        std::lround(i < n ? 16 + gain * (v - 16) : 128 + 0.8 * (v - 128)));
+  }
+  return f;
+}
+
+// The frame at which auto acquisition first reports the moving object, or -1.
+int acquired_at(double gain, const TrackerParams& tp) {
+  Tracker t;
+  Scene s;
+  s.textured = true;
+  s.arm = false;
+  s.centre = {80, 120};
+  for (int i = 0; i < 40; ++i) {
+    if (i >= 12) s.centre.x = 80 + 3.0 * (i - 11);
+    s.seed = i;
+    const Frame f = dimmed(render(s), gain);
+    const TrackResult r =
+        t.track(f.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp);
+    if (has_features(r.status)) {
+      expect_close(r, f, 4, 0.15, "found in dim light");
+      return i;
+    }
+  }
+  return -1;
+}
+
+TEST(ObjectModel, NoSeedADimSceneIsSearchedWithThresholdsScaledToItsContrast) {
+  const int bright = acquired_at(1.0, {});
+  ASSERT_GE(bright, 12);
+  // At a fifth of the contrast the scene's changes are a fifth as large: with the thresholds
+  // scaled to the scene's spread the object is found as soon as in full light...
+  const int dim = acquired_at(0.2, {});
+  EXPECT_GE(dim, 12);
+  EXPECT_LE(dim, bright + 2);
+  // ... where the thresholds as they are for full light find it later or never.
+  TrackerParams absolute;
+  absolute.full_contrast = 0;
+  const int unscaled = acquired_at(0.2, absolute);
+  EXPECT_TRUE(unscaled < 0 || unscaled > dim) << unscaled << " vs " << dim;
+}
+
 TEST(ObjectModel, FoundAgainByItsColoursWithDepthGoingOn) {
   Tracker t;
   t.seed({160, 120});
