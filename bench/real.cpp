@@ -219,6 +219,8 @@ struct Planes {
 //   mirror  left and right swapped (the truth too)
 //   dark    a dimmer scene: luma at 55 % of its range above black, chroma at 80 % of its swing
 //   warm    a warm light: luma at 92 %, Cb 10 lower, Cr 12 higher
+//   bright  overexposed: luma × 1.35 − 20, the highlights burnt out at 255
+//   gamma   shadows lifted: luma through a gamma of 0.5 (255 · (Y / 255)^0.5)
 //   noise   sensor noise: Gaussian, σ 8 grey levels on luma, 4 on chroma (fixed seed)
 //   fast    every third frame: three times the motion between frames
 std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
@@ -245,6 +247,13 @@ std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
       p.y.convertTo(p.y, -1, 0.55, 16 * 0.45);
       p.u.convertTo(p.u, -1, 0.8, 128 * 0.2);
       p.v.convertTo(p.v, -1, 0.8, 128 * 0.2);
+    } else if (how == "bright") {
+      p.y.convertTo(p.y, -1, 1.35, -20);  // saturates at 0 and 255
+    } else if (how == "gamma") {
+      cv::Mat lut(1, 256, CV_8U);
+      for (int v = 0; v < 256; ++v)
+        lut.at<std::uint8_t>(v) = cv::saturate_cast<std::uint8_t>(255 * std::sqrt(v / 255.0));
+      cv::LUT(p.y, lut, p.y);
     } else if (how == "warm") {
       p.y.convertTo(p.y, -1, 0.92, 0);
       p.u.convertTo(p.u, -1, 1, -10);
@@ -744,7 +753,7 @@ int main(int argc, char** argv) {
     const std::size_t originals = clips.size();
     for (std::size_t k = 0; k < originals; ++k) {
       if (clips[k]->truth.empty()) continue;
-      for (const char* how : {"mirror", "dark", "warm", "noise", "fast"}) {
+      for (const char* how : {"mirror", "dark", "bright", "gamma", "warm", "noise", "fast"}) {
         clips.push_back(variant(*clips[k], how));
         write_truth(*clips.back(), out + "/truth");
       }

@@ -346,7 +346,8 @@ class Report:
                    f" | {fmt_pct(mosse['within']) if mosse else 'not measured'} |")
         self.w()
         self.w("mirror: left and right swapped; dark: luma at 55 % of its range, chroma at 80 %; "
-               "warm: luma at 92 %, Cb 10 lower, Cr 12 higher; noise: Gaussian, σ 8 on luma, 4 "
+               "bright: luma × 1.35 − 20, highlights burnt out; gamma: shadows lifted, luma "
+               "through a gamma of 0.5; warm: luma at 92 %, Cb 10 lower, Cr 12 higher; noise: Gaussian, σ 8 on luma, 4 "
                "on chroma; fast: every third frame. The truth follows (mirrored, every third "
                "frame).")
         self.w()

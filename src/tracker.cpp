@@ -292,6 +292,16 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
     why = "nothing of the object's colours is left around it";
     return false;
   }
+  // An object found by motion was wholly in view: a silhouette that grew from it to the frame's
+  // border has run into the arm that holds it (or the table), and is no start.
+  if (!inner_ && !resumed) {
+    const Rect b = to_frame(moments(silhouette_).bbox, object_.scale(), w, h);
+    if (b.x <= 0 || b.y <= 0 || b.right() >= w || b.bottom() >= h) {
+      object_.reset();
+      why = "what moved there runs into the frame's border (an arm, not an object): left alone";
+      return false;
+    }
+  }
   // An object found by motion alone must not be the background: a static region that a
   // passer-by's colours joined is left alone, whatever moved around it.
   if (!inner_ && !resumed &&

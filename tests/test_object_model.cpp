@@ -229,6 +229,28 @@ TEST(ObjectModel, NoSeedADimSceneIsSearchedWithThresholdsScaledToItsContrast) {
   EXPECT_TRUE(unscaled < 0 || unscaled > dim) << unscaled << " vs " << dim;
 }
 
+TEST(ObjectModel, NoSeedNeverStartsOnASilhouetteThatRunsIntoTheFrameBorder) {
+  // The disc is waved by an arm that reaches the frame's right border: what is found is the
+  // disc, wholly in view, never a silhouette grown along the arm to the border.
+  Tracker t;
+  Scene s;
+  s.textured = true;
+  bool found = false;
+  for (int i = 0; i < 40; ++i) {
+    const int moving = std::max(0, i - 10);  // held still while the scene is learned, then waved
+    s.centre = {120 + 4.0 * moving, 120 + 10 * std::sin(moving / 2.0)};
+    s.seed = i;
+    const Frame f = render(s);
+    const TrackResult r =
+        t.track(f.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, {});
+    if (!has_features(r.status)) continue;
+    found = true;
+    EXPECT_LT(r.features.bbox.right(), f.truth.cols) << "frame " << i;
+    expect_close(r, f, 4, 0.15, "frame " + std::to_string(i));
+  }
+  EXPECT_TRUE(found);
+}
+
 TEST(ObjectModel, FoundAgainByItsColoursWithDepthGoingOn) {
   Tracker t;
   t.seed({160, 120});
