@@ -25,7 +25,7 @@ struct ObjectModelParams {
   // At the start, only the colours of the disc around the seed are the object's (its radius the
   // seed's depth in the first silhouette, at least this share of √area): a first silhouette may
   // take in part of the hand, the disc does not.
-  double core = 0.3;
+  double core = 0.2;
   int start_rounds = 3;  // rounds of segmenting and learning on the first frame
   // On the first frame the silhouette may reach this share of √area beyond the first one: across
   // a finger to the object's part on its other side.

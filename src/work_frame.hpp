@@ -25,6 +25,7 @@ class WorkFrame {
  private:
   std::vector<std::uint8_t> planes_;
   std::vector<std::uint32_t> sums_;      // per block of a row
+  std::vector<std::uint16_t> columns_;   // per frame column of a block row: its s pixels' sum
   std::vector<std::ptrdiff_t> offsets_;  // chroma offset of each block of a row
   ColorView view_;
   Rect rect_;

@@ -80,7 +80,9 @@ TEST(Mask, FillHolesKeepsWhatReachesTheBorder) {
   // Nothing but the ring's inside was added: every added pixel is enclosed by the ring.
   for (int y = 0; y < 40; ++y)
     for (int x = 0; x < 50; ++x)
-      if (mask.row(y)[x] && !m.at<std::uint8_t>(y, x)) ASSERT_LT(std::hypot(x - 20, y - 20), 12);
+      if (mask.row(y)[x] && !m.at<std::uint8_t>(y, x)) {
+        ASSERT_LT(std::hypot(x - 20, y - 20), 12);
+      }
 }
 
 TEST(Mask, ConvexHullIsOpenCvsFilledHull) {
@@ -180,24 +182,30 @@ TEST(WorkFrame, BlocksAreTheMeansOfTheirPixels) {
   ColorView c;
   c.luma = ImageView(i420.data, 64, 48, 64);
   c.chroma = {i420.data + 64 * 48, i420.data + 64 * 48 + 32 * 24, 32, 1, 1, 1};
-  for (int s : {1, 2, 3, 4}) {
-    WorkFrame wf;
-    wf.build(c, s, {1, 1, 100, 100});  // clipped to the frame's blocks
-    const Rect expect{1, 1, (64 + s - 1) / s - 1, (48 + s - 1) / s - 1};
-    ASSERT_EQ(wf.rect(), expect) << s;
-    for (int y = 0; y < wf.rect().height; ++y) {
-      for (int x = 0; x < wf.rect().width; ++x) {
-        const int fx0 = (x + 1) * s, fy0 = (y + 1) * s;
-        int sum = 0, n = 0;
-        for (int fy = fy0; fy < std::min(48, fy0 + s); ++fy)
-          for (int fx = fx0; fx < std::min(64, fx0 + s); ++fx) sum += c.luma.at(fx, fy), ++n;
-        ASSERT_EQ(wf.view().luma.at(x, y), (sum + n / 2) / n) << s;
-        const int cx = std::min(63, fx0 + s / 2), cy = std::min(47, fy0 + s / 2);
-        ASSERT_EQ(wf.view().chroma.u_at(x, y), c.chroma.u_at(cx, cy));
-        ASSERT_EQ(wf.view().chroma.v_at(x, y), c.chroma.v_at(cx, cy));
+  // Regions clipped to the frame's blocks (the last ones partial unless s divides the frame),
+  // and regions inside it (all blocks whole).
+  for (const bool inside : {false, true})
+    for (int s : {1, 2, 3, 4, 5, 7, 8}) {
+      WorkFrame wf;
+      const Rect blocks{0, 0, (64 + s - 1) / s, (48 + s - 1) / s};
+      const Rect region =
+          inside ? Rect{1, 1, blocks.width - 3, blocks.height - 3} : Rect{1, 1, 100, 100};
+      wf.build(c, s, region);
+      const Rect expect = region & blocks;
+      ASSERT_EQ(wf.rect(), expect) << s;
+      for (int y = 0; y < wf.rect().height; ++y) {
+        for (int x = 0; x < wf.rect().width; ++x) {
+          const int fx0 = (x + 1) * s, fy0 = (y + 1) * s;
+          int sum = 0, n = 0;
+          for (int fy = fy0; fy < std::min(48, fy0 + s); ++fy)
+            for (int fx = fx0; fx < std::min(64, fx0 + s); ++fx) sum += c.luma.at(fx, fy), ++n;
+          ASSERT_EQ(wf.view().luma.at(x, y), (sum + n / 2) / n) << s;
+          const int cx = std::min(63, fx0 + s / 2), cy = std::min(47, fy0 + s / 2);
+          ASSERT_EQ(wf.view().chroma.u_at(x, y), c.chroma.u_at(cx, cy));
+          ASSERT_EQ(wf.view().chroma.v_at(x, y), c.chroma.v_at(cx, cy));
+        }
       }
     }
-  }
 }
 
 }  // namespace
