@@ -1,5 +1,7 @@
 #include "frame_color.hpp"
 
+#include <cstring>
+
 #include "gray_conversion.hpp"
 
 namespace projtrack::gst {
@@ -44,8 +46,19 @@ ColorView frame_color(const GstVideoFrame* frame, std::vector<std::uint8_t>& buf
   const int width = GST_VIDEO_FRAME_WIDTH(frame), height = GST_VIDEO_FRAME_HEIGHT(frame);
   if (has_luma_plane(GST_VIDEO_FRAME_FORMAT(frame))) {
     ColorView c;
-    c.luma = ImageView(static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame, 0)),
-                       width, height, GST_VIDEO_FRAME_PLANE_STRIDE(frame, 0));
+    const auto* luma = static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame, 0));
+    // One row has no stride to speak of (a meta may say 0).
+    const std::ptrdiff_t stride = height == 1 ? width : GST_VIDEO_FRAME_PLANE_STRIDE(frame, 0);
+    if (stride >= 0) {
+      c.luma = ImageView(luma, width, height, stride);
+    } else {
+      // Bottom-up rows: the library reads rows at rising addresses, so they are copied in order
+      // (the chroma, read through signed offsets, stays in place).
+      buffer.resize(static_cast<std::size_t>(width) * height);
+      for (int y = 0; y < height; ++y)
+        std::memcpy(buffer.data() + static_cast<std::size_t>(y) * width, luma + y * stride, width);
+      c.luma = ImageView(buffer.data(), width, height, width);
+    }
     if (GST_VIDEO_FRAME_N_COMPONENTS(frame) >= 3) c.chroma = chroma_in_place(frame);
     return c;
   }
