@@ -246,6 +246,34 @@ TEST(Buffers, TruncatedBufferWithoutMetaIsRefused) {
   expect_refused(run(empty), "buffer-too-small");
 }
 
+// A meta whose own map function hands out less than the plane: caught after mapping.
+gboolean short_map(GstVideoMeta* meta, guint plane, GstMapInfo* info, gpointer* data, gint* stride,
+                   GstMapFlags flags) {
+  if (!gst_buffer_map(meta->buffer, info, flags)) return FALSE;
+  info->size = 100;
+  *data = info->data + meta->offset[plane];
+  *stride = meta->stride[plane];
+  return TRUE;
+}
+
+gboolean short_unmap(GstVideoMeta* meta, guint, GstMapInfo* info) {
+  gst_buffer_unmap(meta->buffer, info);
+  return TRUE;
+}
+
+TEST(Buffers, PlaneLargerThanItsMappingIsRefused) {
+  const Disc d;
+  Case r{d.caps("GRAY8"), [&] {
+           GstBuffer* b = buffer_of(d.luma(d.width));
+           add_meta(b, GST_VIDEO_FORMAT_GRAY8, d.width, d.height, {0}, {d.width});
+           GstVideoMeta* meta = gst_buffer_get_video_meta(b);
+           meta->map = short_map;
+           meta->unmap = short_unmap;
+           return b;
+         }};
+  expect_refused(run(r), "plane-outside-mapping");
+}
+
 // Stride 0 repeats one row on every row: a picture no camera makes, so a lie about the layout.
 TEST(Buffers, ZeroStrideIsRefusedUnlessTheFrameHasOneRow) {
   const Disc d;
