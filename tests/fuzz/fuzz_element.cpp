@@ -15,6 +15,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <set>
@@ -213,6 +214,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t i = 0; i < bytes.size(); ++i)
     bytes[i] = in.left() ? in.byte() : static_cast<std::uint8_t>(i * 7 + (i >> 6) * 13);
 
+  if (g_getenv("PROJTRACK_FUZZ_VERBOSE")) {  // what an input is, when replaying a crash
+    std::fprintf(stderr, "%s %dx%d, %zu bytes in %zu cuts, draw %d, method %d, seed %d, %d frames",
+                 gst_video_format_to_string(format), info.width, info.height, layout.size,
+                 layout.cuts.size(), draw, method, seed, frames);
+    if (layout.meta) {
+      std::fprintf(stderr, "; meta %s %dx%d", gst_video_format_to_string(layout.format),
+                   layout.width, layout.height);
+      for (std::size_t i = 0; i < layout.offsets.size(); ++i)
+        std::fprintf(stderr, ", plane %zu at %zu stride %d", i, layout.offsets[i],
+                     layout.strides[i]);
+    }
+    std::fprintf(stderr, "\n");
+  }
   GstHarness* h = gst_harness_new("projtrack");
   check(h != nullptr, "the element loads");
   GstBus* bus = gst_bus_new();

@@ -345,6 +345,29 @@ TEST(Buffers, PlanesInMemoriesOfTheirOwnAreTracked) {
   EXPECT_EQ(o.memories, 3u) << "planes that each fit their block are not merged (a copy)";
 }
 
+// U and V planes with strides of their own (the library reads chroma with one stride): found by
+// fuzzing, an overflow past the V plane under ASan.
+TEST(Buffers, ChromaPlanesWithDifferentStridesAreTracked) {
+  const Disc d;
+  const Outcome ref = plain("I420");
+  const int cw = (d.width + 1) / 2, ch = (d.height + 1) / 2, wide = cw + 20;
+  Case r{d.caps("I420"), [&] {
+           Bytes b = d.luma(d.width);
+           const Bytes u = d.plane(wide, true, 90, 128), v = d.plane(cw, true, 160, 128);
+           b.insert(b.end(), u.begin(), u.end());
+           b.insert(b.end(), v.begin(), v.end());
+           GstBuffer* buf = buffer_of(b);
+           const gsize luma = static_cast<gsize>(d.width) * d.height;
+           add_meta(buf, GST_VIDEO_FORMAT_I420, d.width, d.height,
+                    {0, luma, luma + static_cast<gsize>(wide) * ch}, {d.width, wide, cw});
+           return buf;
+         }};
+  r.draw = false;
+  const Outcome o = run(r);
+  expect_same_track(o, ref);
+  EXPECT_TRUE(o.unchanged);
+}
+
 // Bottom-up rows (negative strides) are supported: the same picture, the same track, and the
 // overlay drawn on the same pixels.
 TEST(Buffers, BottomUpRowsAreTrackedAsTopDownOnes) {
