@@ -120,8 +120,9 @@ enum class SeedCommand { None, Seed, SeedBox, Reset };
 struct Stream {
   projtrack::Tracker tracker;
   projtrack::Trace trace;
-  std::vector<std::uint8_t> converted;    // packed RGB frames converted to luma and chroma
-  std::set<std::string> layout_warnings;  // reasons a buffer was not read, warned since the caps
+  std::vector<std::uint8_t> converted;  // packed RGB frames converted to luma and chroma
+  // Why buffers were not read since the caps: each reason is warned once.
+  std::set<std::string> layout_warnings;
   int width = 0, height = 0;
   int black_level = 0;  // of edge-detector=input: 16 in limited-range YUV
   guint64 frames = 0;   // for buffers without timestamps
@@ -730,20 +731,16 @@ static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuff
   GstVideoFrame frame;
   const projtrack::gst::FrameMapping mapping = projtrack::gst::map_frame_checked(
       &frame, &filter->in_info, buffer, s.draw ? GST_MAP_READWRITE : GST_MAP_READ);
-  TrackResult r;
-  if (!mapping.ok()) {
-    r = unread_frame(self, mapping, command);
-  } else {
-    if (mapping.merged) GST_DEBUG_OBJECT(self, "a plane spanned memory blocks: merged them");
-    try {
-      r = process(self, &frame, s, command);
-    } catch (const std::exception& e) {  // e.g. std::bad_alloc: never unwind into GStreamer's C
-      gst_video_frame_unmap(&frame);
-      GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Tracking failed: %s", e.what()), (nullptr));
-      return GST_FLOW_ERROR;
-    }
+  if (mapping.merged) GST_DEBUG_OBJECT(self, "a plane spanned memory blocks: merged them");
+  TrackResult r = mapping.ok() ? TrackResult{} : unread_frame(self, mapping, command);
+  try {
+    if (mapping.ok()) r = process(self, &frame, s, command);
+  } catch (const std::exception& e) {  // e.g. std::bad_alloc: never unwind into GStreamer's C
     gst_video_frame_unmap(&frame);
+    GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Tracking failed: %s", e.what()), (nullptr));
+    return GST_FLOW_ERROR;
   }
+  if (mapping.ok()) gst_video_frame_unmap(&frame);
   if (projtrack::has_features(r.status)) attach_meta(buffer, r, s.method);
 
   Stream& st = *self->stream;
