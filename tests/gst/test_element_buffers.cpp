@@ -425,6 +425,24 @@ TEST(Buffers, BottomUpRowsBeforeTheBufferAreRefused) {
   expect_refused(run(r), "plane-outside-buffer");
 }
 
+// The inner point given before a buffer that is not read still starts the track on the next one
+// (without it, auto acquisition would search: the disc does not move).
+TEST(Buffers, ASeedWaitsForTheNextReadableBuffer) {
+  const Disc d;
+  int pushed = 0;
+  Case r{d.caps("GRAY8"), [&] {
+           GstBuffer* b = buffer_of(d.luma(d.width));
+           if (pushed++ == 0) add_meta(b, GST_VIDEO_FORMAT_GRAY8, d.width, d.height, {0}, {0});
+           return b;
+         }};
+  r.frames = 2;
+  r.draw = false;
+  const Outcome o = run(r);
+  EXPECT_EQ(o.status, "ok");
+  EXPECT_EQ(o.warnings, 1);
+  EXPECT_EQ(o.messages, 2);
+}
+
 // Caps of 65536 × 32769 GRAY8 (2^31 + 65536 pixels, which GStreamer accepts): refused before any
 // pixel is read. The memory is a read-only, never-touched mapping, so a read costs nothing and a
 // write would crash.
