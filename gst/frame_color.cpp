@@ -1,5 +1,7 @@
 #include "frame_color.hpp"
 
+#include <cstring>
+
 #include "gray_conversion.hpp"
 
 namespace projtrack::gst {
@@ -43,10 +45,40 @@ ChromaView chroma_in_place(const GstVideoFrame* frame) {
 ColorView frame_color(const GstVideoFrame* frame, std::vector<std::uint8_t>& buffer) {
   const int width = GST_VIDEO_FRAME_WIDTH(frame), height = GST_VIDEO_FRAME_HEIGHT(frame);
   if (has_luma_plane(GST_VIDEO_FRAME_FORMAT(frame))) {
+    const auto* luma = static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame, 0));
+    // One row has no stride to speak of (a meta may say 0).
+    const std::ptrdiff_t stride = height == 1 ? width : GST_VIDEO_FRAME_PLANE_STRIDE(frame, 0);
+    const bool chroma = GST_VIDEO_FRAME_N_COMPONENTS(frame) >= 3;
+    // The library reads U and V with one stride; a meta may give their planes two.
+    const bool gather_chroma =
+        chroma && GST_VIDEO_FRAME_COMP_STRIDE(frame, 1) != GST_VIDEO_FRAME_COMP_STRIDE(frame, 2);
+    const int cw = GST_VIDEO_FRAME_COMP_WIDTH(frame, 1), ch = GST_VIDEO_FRAME_COMP_HEIGHT(frame, 1);
+    const std::size_t luma_copy = stride < 0 ? static_cast<std::size_t>(width) * height : 0;
+    const std::size_t chroma_copy = gather_chroma ? static_cast<std::size_t>(cw) * ch : 0;
+    buffer.resize(luma_copy + 2 * chroma_copy);
     ColorView c;
-    c.luma = ImageView(static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame, 0)),
-                       width, height, GST_VIDEO_FRAME_PLANE_STRIDE(frame, 0));
-    if (GST_VIDEO_FRAME_N_COMPONENTS(frame) >= 3) c.chroma = chroma_in_place(frame);
+    if (stride >= 0) {
+      c.luma = ImageView(luma, width, height, stride);
+    } else {
+      // Bottom-up rows: the library reads rows at rising addresses, so they are copied in order
+      // (the chroma, read through signed offsets, stays in place).
+      for (int y = 0; y < height; ++y)
+        std::memcpy(buffer.data() + static_cast<std::size_t>(y) * width, luma + y * stride, width);
+      c.luma = ImageView(buffer.data(), width, height, width);
+    }
+    if (gather_chroma) {
+      std::uint8_t* u = buffer.data() + luma_copy;
+      std::uint8_t* v = u + chroma_copy;
+      for (int k : {1, 2}) {
+        gather_component(static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, k)),
+                         GST_VIDEO_FRAME_COMP_PSTRIDE(frame, k),
+                         GST_VIDEO_FRAME_COMP_STRIDE(frame, k), cw, ch, k == 1 ? u : v, cw);
+      }
+      const ChromaView in_place = chroma_in_place(frame);
+      c.chroma = {u, v, cw, 1, in_place.shift_x, in_place.shift_y};
+    } else if (chroma) {
+      c.chroma = chroma_in_place(frame);
+    }
     return c;
   }
   if (is_packed_yuv(GST_VIDEO_FRAME_FORMAT(frame))) {

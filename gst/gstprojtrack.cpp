@@ -64,12 +64,14 @@
 #include <cmath>
 #include <exception>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "edge_detection.hpp"
 #include "frame_color.hpp"
+#include "frame_mapping.hpp"
 #include "overlay.hpp"
 #include "sample_clock.hpp"
 #include "tracker.hpp"
@@ -119,6 +121,8 @@ struct Stream {
   projtrack::Tracker tracker;
   projtrack::Trace trace;
   std::vector<std::uint8_t> converted;  // packed RGB frames converted to luma and chroma
+  // Why buffers were not read since the caps: each reason is warned once.
+  std::set<std::string> layout_warnings;
   int width = 0, height = 0;
   int black_level = 0;  // of edge-detector=input: 16 in limited-range YUV
   guint64 frames = 0;   // for buffers without timestamps
@@ -540,6 +544,7 @@ static gboolean gst_projtrack_set_info(GstVideoFilter* filter, GstCaps*, GstVide
       GST_VIDEO_INFO_IS_YUV(in_info) && in_info->colorimetry.range == GST_VIDEO_COLOR_RANGE_16_235
           ? 16
           : 0;
+  st.layout_warnings.clear();
   GST_OBJECT_LOCK(self);
   self->frame_width = width;
   self->frame_height = height;
@@ -687,6 +692,26 @@ static bool worth_posting(Updates updates, const TrackResult& r, std::optional<S
   return updates == Updates::EveryFrame || (updates == Updates::OnChange && changed);
 }
 
+// A buffer whose layout does not fit its memory is not read: it passes through untouched, the
+// track waits (a seed given meanwhile applies to the next readable frame), and the status says
+// why. One element warning per reason and caps; the debug log has every frame.
+static TrackResult unread_frame(GstProjtrack* self, const projtrack::gst::FrameMapping& mapping,
+                                SeedCommand command) {
+  GST_OBJECT_LOCK(self);
+  if (self->pending == SeedCommand::None) self->pending = command;
+  GST_OBJECT_UNLOCK(self);
+  GST_DEBUG_OBJECT(self, "buffer not read (%s): %s", mapping.reason, mapping.detail.c_str());
+  if (self->stream->layout_warnings.insert(mapping.reason).second) {
+    GST_ELEMENT_WARNING(self, STREAM, FORMAT,
+                        ("Video buffer not read (%s): %s", mapping.reason, mapping.detail.c_str()),
+                        ("such buffers pass through untouched, with status=invalid-image"));
+  }
+  TrackResult r;
+  r.status = Status::InvalidImage;
+  r.detail = mapping.detail;
+  return r;
+}
+
 // In place, as GstVideoFilter would, but the frame is mapped for writing only when the overlay
 // draws: a read-only map never copies a buffer that another branch (a tee) shares.
 static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
@@ -704,20 +729,18 @@ static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuff
   GST_OBJECT_UNLOCK(self);
 
   GstVideoFrame frame;
-  if (!gst_video_frame_map(&frame, &filter->in_info, buffer,
-                           s.draw ? GST_MAP_READWRITE : GST_MAP_READ)) {
-    GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Could not map the video frame"), (nullptr));
-    return GST_FLOW_ERROR;
-  }
-  TrackResult r;
+  const projtrack::gst::FrameMapping mapping = projtrack::gst::map_frame_checked(
+      &frame, &filter->in_info, buffer, s.draw ? GST_MAP_READWRITE : GST_MAP_READ);
+  if (mapping.merged) GST_DEBUG_OBJECT(self, "a plane spanned memory blocks: merged them");
+  TrackResult r = mapping.ok() ? TrackResult{} : unread_frame(self, mapping, command);
   try {
-    r = process(self, &frame, s, command);
+    if (mapping.ok()) r = process(self, &frame, s, command);
   } catch (const std::exception& e) {  // e.g. std::bad_alloc: never unwind into GStreamer's C
     gst_video_frame_unmap(&frame);
     GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Tracking failed: %s", e.what()), (nullptr));
     return GST_FLOW_ERROR;
   }
-  gst_video_frame_unmap(&frame);
+  if (mapping.ok()) gst_video_frame_unmap(&frame);
   if (projtrack::has_features(r.status)) attach_meta(buffer, r, s.method);
 
   Stream& st = *self->stream;
@@ -749,6 +772,9 @@ static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuff
                         .count();
     GstMessage* msg = result_message(self, buffer, r, s.method, st.tracker.inner_point(),
                                      static_cast<guint64>(ns));
+    if (!mapping.ok())
+      gst_structure_set(gst_message_writable_structure(msg), "reason", G_TYPE_STRING,
+                        mapping.reason, nullptr);
     gst_element_post_message(GST_ELEMENT(self), msg);  // never under the object lock
   }
   return GST_FLOW_OK;

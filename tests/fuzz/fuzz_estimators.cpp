@@ -12,32 +12,15 @@
 
 #include "edge_detection.hpp"
 #include "estimator.hpp"
+#include "fuzz_input.hpp"
 #include "tracker.hpp"
 
 namespace {
 
 using namespace projtrack;
 
-// Reads the input front to back; past the end it yields zeros.
-class Input {
- public:
-  Input(const std::uint8_t* d, std::size_t n) : d_(d), n_(n) {}
-  std::uint8_t byte() { return i_ < n_ ? d_[i_++] : 0; }
-  int in(int lo, int hi) { return lo + static_cast<int>(u16() % (hi - lo + 1)); }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(byte() | byte() << 8); }
-  std::size_t left() const { return i_ < n_ ? n_ - i_ : 0; }
-
- private:
-  const std::uint8_t* d_;
-  std::size_t n_, i_ = 0;
-};
-
-void check(bool ok, const char* what) {
-  if (!ok) {
-    std::fprintf(stderr, "fuzz: broken promise: %s\n", what);
-    std::abort();
-  }
-}
+using fuzz::check;
+using fuzz::Input;
 
 // Any row of the table of methods.
 Method any_method(Input& in) { return kAllMethods[in.in(0, kMethodCount - 1)]; }
