@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <memory>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -539,6 +540,8 @@ std::string default_method() {
 }
 
 bool only_default = false;  // --only-default: the element's default method and no seed alone
+// --seeds FILE: other points to seed the default method at, per clip (bench/real_seeds.py).
+std::map<std::string, std::vector<Point2i>> other_seeds;
 
 void run_all(const Clip& c, Progress& progress) {
   std::vector<std::pair<Tracker, std::string>> ts;  // tracker, group
@@ -550,6 +553,15 @@ void run_all(const Clip& c, Progress& progress) {
       ts.push_back(
           {projtrack_tracker(c, "projtrack " + method, "method=" + method + " " + seed_props(c)),
            "projtrack seeded"});
+    }
+  }
+  if (!c.truth.empty() && c.variant.empty() && other_seeds.count(c.name)) {
+    for (const Point2i& p : other_seeds.at(c.name)) {
+      const std::string at = std::to_string(p.x) + "," + std::to_string(p.y);
+      ts.push_back({projtrack_tracker(c, "projtrack seeded at " + at,
+                                      "inner-point-x=" + std::to_string(p.x) +
+                                          " inner-point-y=" + std::to_string(p.y)),
+                    "projtrack seeded elsewhere"});
     }
   }
   ts.push_back({projtrack_tracker(c, "projtrack no seed", ""), "projtrack no seed"});
@@ -702,6 +714,16 @@ int main(int argc, char** argv) {
       variants = true;
     } else if (a == "--only-default") {
       only_default = true;
+    } else if (a == "--seeds" && i + 1 < argc) {
+      std::ifstream in(argv[++i]);
+      std::string line;
+      std::getline(in, line);  // the header
+      while (std::getline(in, line)) {
+        std::istringstream row(line);
+        std::string clip, x, y;
+        if (std::getline(row, clip, ',') && std::getline(row, x, ',') && std::getline(row, y))
+          other_seeds[clip].push_back({std::atoi(x.c_str()), std::atoi(y.c_str())});
+      }
     } else if (a == "--no-draw") {
       draw = false;
     } else if (a == "--clip" && i + 1 < argc && std::strchr(argv[i + 1], '=')) {
@@ -711,7 +733,7 @@ int main(int argc, char** argv) {
       std::fprintf(
           stderr,
           "usage: projtrack-real --out DIR [--truth DIR] [--frames N] [--no-draw] [--only-default] "
-          "[--variants] "
+          "[--variants] [--seeds FILE] "
           "--clip NAME=FILE...\n");
       return 2;
     }

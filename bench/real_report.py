@@ -326,6 +326,10 @@ class Report:
         self.w()
         self.w(f"{len(t)} frames, 640×480. Lost and searching frames count as misses in every "
                "column: their error is infinite (\"lost\" where a percentile falls on one).")
+        if any(self.group(clip, n) == "projtrack seeded elsewhere" for n in self.trackers[clip]):
+            self.w(f"\"projtrack seeded at x,y\": the default method ({self.default}) seeded at "
+                   "the middle of each quarter of frame 0's true silhouette (about its centroid; "
+                   "`bench/real_seeds.py`), where a user might click instead of its deepest point.")
         self.w()
 
     def variants_table(self):
