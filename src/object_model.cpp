@@ -136,6 +136,42 @@ void ObjectModel::take_unknown_inside(Point2i seed, Mask& s) {
   ops_.fill_holes(s);
 }
 
+void ObjectModel::cut_arm(Mask& s, const Rect& frame, Point2i seed, const ObjectModelParams& p) {
+  const MaskMoments m = moments(s);
+  const Rect& b = m.bbox;
+  if (!(p.arm_cut > 0) || b.empty() ||
+      (b.x > frame.x && b.y > frame.y && b.right() < frame.right() && b.bottom() < frame.bottom()))
+    return;
+  const int r = at_least(p.arm_cut, m.area, 1);
+  ops_.erode(s, r, hull_);
+  if (moments(hull_).area <= 0) return;  // all of it thin: nothing to tell the arm by
+  ops_.dilate(hull_, r, grown_);
+  const Rect& g = grown_.rect();
+  for (int y = 0; y < g.height; ++y) {  // the opening, within the silhouette
+    std::uint8_t* o = grown_.row(y);
+    for (int x = 0; x < g.width; ++x) o[x] = o[x] && s.at({x + g.x, y + g.y});
+  }
+  pieces_.label(grown_.view(), false);
+  const std::int32_t seed_piece = g.contains(seed) ? pieces_.row(seed.y - g.y)[seed.x - g.x] : 0;
+  arm_.assign(static_cast<std::size_t>(pieces_.count()) + 1, 0);
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      const std::int32_t l = pieces_.row(y)[x];
+      const int fx = x + g.x, fy = y + g.y;
+      if (l && l != seed_piece &&
+          (fx <= frame.x || fy <= frame.y || fx >= frame.right() - 1 || fy >= frame.bottom() - 1))
+        arm_[static_cast<std::size_t>(l)] = 1;
+    }
+  for (int y = 0; y < g.height; ++y) {
+    std::uint8_t* o = grown_.row(y);
+    for (int x = 0; x < g.width; ++x)
+      o[x] = o[x] && !arm_[static_cast<std::size_t>(pieces_.row(y)[x])];
+  }
+  if (moments(grown_).area <= 0) return;
+  embed(grown_, s.rect(), s);
+  ops_.fill_holes(s);
+}
+
 bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& first,
                         int first_scale, Point2i seed_pixel,
                         const std::vector<std::uint32_t>& background, const ObjectModelParams& p,
@@ -151,6 +187,8 @@ bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& f
   const int reach = at_least(p.start_reach, m0.area, 2);
   load(frame, m0.bbox, margin_for(m0, reach, p), m0.area, true, p);
   unlearned_ = 0;
+  const Rect whole{0, 0, (frame.luma.width + scale_ - 1) / scale_,
+                   (frame.luma.height + scale_ - 1) / scale_};
   // The core: the disc around the seed, within the first silhouette.
   const int radius = std::max(depth_at(prior_, seed, prior_.rect().width + prior_.rect().height),
                               at_least(p.core, m0.area, 1));
@@ -180,6 +218,7 @@ bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& f
       return false;
     }
     if (round == 0) take_unknown_inside(seed, out);
+    cut_arm(out, whole, seed, p);
     ops_.erode(out, 1, core_);
     learn(moments(core_).area > 0 ? core_ : out, out, p.ring, 1.0);
     score();

@@ -43,6 +43,11 @@ struct ObjectModelParams {
   double window = 0.25;
   // Edge-bounded regions under this share of the expected area are taken or left whole.
   double small_region = 1.25;
+  // A first silhouette that reaches the frame's border has taken in the arm that holds the
+  // object (a held object is in the picture): it is cut where it is thinner than twice this share
+  // of √area (an opening), and the pieces that then reach the border are dropped, unless the seed
+  // is in one.
+  double arm_cut = 0.1;
 };
 
 class ObjectModel {
@@ -85,6 +90,8 @@ class ObjectModel {
             const ObjectModelParams& p);
   // The likelihood of the loaded work frame, into likelihood_ (load() does it).
   void score();
+  // The arm cut (ObjectModelParams::arm_cut) of `s`, when it reaches `frame` (work coordinates).
+  void cut_arm(Mask& s, const Rect& frame, Point2i seed, const ObjectModelParams& p);
   // Moves `prior` onto the object-like pixels within `window` work px of its box.
   void recentre(Mask& prior, int window);
   // Learns the colours of `object` against a ring around the convex hull of `silhouette` (on this
@@ -102,6 +109,8 @@ class ObjectModel {
   WorkFrame work_;
   EdgeMap edge_map_;
   MaskOps ops_;
+  RegionLabels pieces_;            // cut_arm(): the pieces left by the opening
+  std::vector<std::uint8_t> arm_;  // per piece: it reaches the frame's border
   int scale_ = 1;
   int unlearned_ = 0;  // accepted frames since the model last learned
   Mask silhouette_, prior_, core_, grown_, ring_, hull_;
