@@ -60,13 +60,33 @@ void ObjectFinder::foreground(const FinderParams& p) {
   ops_.dilate(opened_, 1, candidates_);
 }
 
-void ObjectFinder::count_motion(const MotionDetector::Motion& motion) {
-  moving_.assign(static_cast<std::size_t>(regions_.count()) + 1, 0);
-  const int s = work_.scale();
+void ObjectFinder::count_motion(const MotionDetector::Motion& motion, MotionCounts& out) const {
+  out.inside.assign(static_cast<std::size_t>(regions_.count()) + 1, 0);
+  out.near.assign(out.inside.size(), 0);
+  const int s = work_.scale(), w = regions_.width(), h = regions_.height();
+  out.per_sample = static_cast<double>(motion.step) * motion.step / (static_cast<double>(s) * s);
   for (const Point2i& q : motion.points) {
     const int x = q.x / s, y = q.y / s;
-    if (x < regions_.width() && y < regions_.height()) moving_[regions_.row(y)[x]] += 1;
+    if (x >= w || y >= h) continue;
+    out.inside[regions_.row(y)[x]] += 1;
+    // Each region within one work pixel counts the sample once.
+    std::int32_t seen[9];
+    int n = 0;
+    for (int yy = std::max(0, y - 1); yy <= std::min(h - 1, y + 1); ++yy)
+      for (int xx = std::max(0, x - 1); xx <= std::min(w - 1, x + 1); ++xx) {
+        const std::int32_t l = regions_.row(yy)[xx];
+        if (l && std::find(seen, seen + n, l) == seen + n) seen[n++] = l;
+      }
+    for (int k = 0; k < n; ++k) out.near[seen[k]] += 1;
   }
+}
+
+bool ObjectFinder::moves(int l, const MotionCounts& m, const FinderParams& p, double share) const {
+  const RegionStats& r = stats_[l];
+  if (r.size <= 0 || static_cast<std::size_t>(l) >= m.inside.size()) return false;
+  return m.inside[l] * m.per_sample >= share * p.min_moving * static_cast<double>(r.size) ||
+         m.near[l] * m.per_sample >=
+             share * p.min_moving_outline * 3.0 * static_cast<double>(r.outline);
 }
 
 void ObjectFinder::count_foreground(const FinderParams& p) {
@@ -125,9 +145,15 @@ int ObjectFinder::best_region(Score&& score) {
   bounds_.assign(stats_.size(), {});
   for (int y = 0; y < regions_.height(); ++y) {
     const std::int32_t* l = regions_.row(y);
-    for (int x = 0; x < regions_.width(); ++x) {
+    const std::int32_t* up = y > 0 ? regions_.row(y - 1) : nullptr;
+    const std::int32_t* down = y + 1 < regions_.height() ? regions_.row(y + 1) : nullptr;
+    const int w = regions_.width();
+    for (int x = 0; x < w; ++x) {
       if (!l[x]) continue;
-      ++stats_[l[x]].size;
+      RegionStats& r = stats_[l[x]];
+      ++r.size;
+      r.outline += x == 0 || x + 1 == w || !up || !down || l[x - 1] != l[x] || l[x + 1] != l[x] ||
+                   up[x] != l[x] || down[x] != l[x];
       bounds_[l[x]].add(x, y);
     }
   }
@@ -227,28 +253,30 @@ bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const Finde
 }
 
 bool ObjectFinder::from_motion(const ColorView& frame, const MotionDetector::Motion& motion,
-                               const FinderParams& p, Mask& out, Point2i& seed, std::string& why) {
+                               const MotionDetector::Motion& before, const FinderParams& p,
+                               Mask& out, Point2i& seed, std::string& why) {
   load(frame, p);
   foreground(p);
   const int w = candidates_.rect().width, h = candidates_.rect().height;
   const double frame_area = static_cast<double>(w) * h;
   regions_.label(candidates_.view(), false);
-  count_motion(motion);
+  count_motion(motion, moving_);
   count_foreground(p);
-  // A motion sample stands for step² frame pixels, a work pixel for scale².
-  const double per_sample = static_cast<double>(motion.step) * motion.step /
-                            (static_cast<double>(work_.scale()) * work_.scale());
   const int label = best_region([&](int l, const RegionStats& r) {
     const Rect& b = r.box;
     const double size = static_cast<double>(r.size);
-    const double share = moving_[l] * per_sample / size;
     if (size < p.min_area * frame_area || size > p.max_area * frame_area) return -1.0;
     if (b.x == 0 || b.y == 0 || b.right() == w || b.bottom() == h) return -1.0;
-    if (share < p.min_moving || foreground_[l] < p.min_foreground * size) return -1.0;
-    return share * size / (static_cast<double>(b.width) * b.height);
+    if (!moves(l, moving_, p) || foreground_[l] < p.min_foreground * size) return -1.0;
+    return moving_.inside[l] * moving_.per_sample / (static_cast<double>(b.width) * b.height);
   });
   if (!label) {
     why = "no moving region of its own colours, wholly in view";
+    return false;
+  }
+  count_motion(before, moving_before_);
+  if (!moves(label, moving_before_, p, 0.5)) {
+    why = "what moves there did not move on the last frame: waiting";
     return false;
   }
   copy_region(label, out);
@@ -272,18 +300,15 @@ bool ObjectFinder::from_model(const ColorView& frame, const AppearanceModel& mod
   ops_.erode(candidates_, 1, opened_);
   ops_.dilate(opened_, 1, candidates_);
   regions_.label(candidates_.view(), false);
-  count_motion(motion);
+  count_motion(motion, moving_);
   count_foreground(p);
-  const double per_sample =
-      static_cast<double>(motion.step) * motion.step / (static_cast<double>(s) * s);
   const double work_area = area / (static_cast<double>(s) * s);
   const double diagonal = std::hypot(w, h);
   const Point2d near_work{near.x / s, near.y / s};
   const int label = best_region([&](int l, const RegionStats& r) {
     const double size = static_cast<double>(r.size);
     if (size < work_area / factor || size > work_area * factor) return -1.0;
-    if (moving_[l] * per_sample / size < p.min_moving || foreground_[l] < p.min_foreground * size)
-      return -1.0;
+    if (!moves(l, moving_, p) || foreground_[l] < p.min_foreground * size) return -1.0;
     const Point2d c{r.box.x + r.box.width / 2.0, r.box.y + r.box.height / 2.0};
     return 1.0 - distance(c, near_work) / diagonal;  // nearest first
   });

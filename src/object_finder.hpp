@@ -25,6 +25,10 @@ struct FinderParams {
   // A candidate found by motion or by colour must have at least this share of its sampled
   // pixels moving: a static region (the background, a table) is never taken for the object.
   double min_moving = 0.02;
+  // ... or at least this share of the band along its outline (3 work pixels wide): an evenly
+  // coloured object that moves a little changes only along its outline, which a static region
+  // does not (the frame's noise changes a few per cent of any band).
+  double min_moving_outline = 0.05;
   // The finder reads the whole frame at a scale that makes it about this many work pixels.
   double work_pixels = 80000;
   // The scene's background: the running mean of the frames searched (at this rate a frame, after
@@ -61,9 +65,12 @@ class ObjectFinder {
                 std::string& why);
   // The moving object: of the regions of colours not seen on the border, the one with the most
   // moving pixels for its size that does not touch the border (the arm that waves an object
-  // does) and is not static. `seed` gets its deepest point.
+  // does) and is not static. It must have moved in `before` too (the last frame that showed
+  // motion), by half as much: a passer-by that crossed a static region for one frame does not
+  // make that region an object. `seed` gets its deepest point.
   bool from_motion(const ColorView& frame, const MotionDetector::Motion& motion,
-                   const FinderParams& p, Mask& out, Point2i& seed, std::string& why);
+                   const MotionDetector::Motion& before, const FinderParams& p, Mask& out,
+                   Point2i& seed, std::string& why);
   // An object seen before: of the regions whose colours the model finds object-like, the one
   // closest in size to `area` (frame px², within `factor`) and nearest `near`, that moves.
   bool from_model(const ColorView& frame, const AppearanceModel& model,
@@ -75,8 +82,15 @@ class ObjectFinder {
   void load(const ColorView& frame, const FinderParams& p);
   // The pixels whose colours are not seen on the border, into candidates_.
   void foreground(const FinderParams& p);
-  // Moving samples per labelled region, and the frame area a work pixel stands for.
-  void count_motion(const MotionDetector::Motion& motion);
+  // Samples of `motion` per labelled region: in it, and within one work pixel of it.
+  struct MotionCounts {
+    std::vector<std::int64_t> inside, near;
+    double per_sample = 0;  // the work pixels a sample stands for
+  };
+  void count_motion(const MotionDetector::Motion& motion, MotionCounts& out) const;
+  // Whether region `l` (of `stats_`, see best_region) moved by FinderParams::min_moving or
+  // min_moving_outline, times `share`.
+  bool moves(int l, const MotionCounts& m, const FinderParams& p, double share = 1) const;
   // Updates the background with the loaded frame; then, per labelled region, its pixels that
   // differ from the background (all of them while the background is not yet known).
   void count_foreground(const FinderParams& p);
@@ -87,6 +101,7 @@ class ObjectFinder {
 
   struct RegionStats {
     std::int64_t size = 0;
+    std::int64_t outline = 0;  // pixels with a 4-neighbour outside the region
     Rect box;
   };
   std::vector<RegionStats> stats_;
@@ -96,7 +111,8 @@ class ObjectFinder {
   std::vector<std::uint8_t> like_;
   Mask candidates_, opened_;
   RegionLabels regions_;
-  std::vector<std::int64_t> moving_, foreground_;
+  MotionCounts moving_, moving_before_;
+  std::vector<std::int64_t> foreground_;
   std::vector<float> scene_;  // the background: running mean luma, at the finder's scale
   Rect scene_rect_;
   int scene_seen_ = 0;

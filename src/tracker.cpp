@@ -39,6 +39,8 @@ void Tracker::drop(bool keep_object) {
   pointer_.interrupt();
   searched_ = 0;
   motion_.reset();
+  moved_ = {};
+  moved_before_ = {};
   if (keep_object) {
     object_.lose();
   } else {
@@ -244,7 +246,9 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
     found = finder_.from_seed(frame, seed, fp, first_, why);
     if (!found) why = "at the frame centre: " + why;
   } else {  // Auto: an object lost before by its colours; else whatever moves
-    moved_before_.swap(moved_.points);  // the last frame's changes, for the check below
+    // The last frame that showed motion, for the finder's check that what moves now moved then
+    // too (a frame repeated by the camera or the encoder shows none, and does not count).
+    if (moved_.fraction >= tp.min_motion) std::swap(moved_before_, moved_);
     if (!motion_.update(frame.luma, motion_params(tp), moved_)) {
       why = "waiting for a second frame to compare";
       return false;
@@ -266,20 +270,7 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
                                  lost_centroid_, fp, first_, seed, why);
       resumed = found;
     } else {
-      found = finder_.from_motion(frame, moved_, fp, first_, seed, why);
-      // It moved on the last frame too: a passer-by that crossed a static region for one frame
-      // does not make that region an object.
-      if (found) {
-        const int s = finder_.scale();
-        const Rect box = to_frame(moments(first_).bbox, s, w, h);
-        std::size_t inside = 0;
-        for (const Point2i& q : moved_before_) inside += box.contains(q);
-        if (static_cast<double>(inside) * moved_.step * moved_.step <
-            0.5 * fp.min_moving * box.width * box.height) {
-          found = false;
-          why = "what moves there did not move on the last frame: waiting";
-        }
-      }
+      found = finder_.from_motion(frame, moved_, moved_before_, fp, first_, seed, why);
     }
   }
   if (!found) return false;

@@ -112,7 +112,7 @@ class Tracker {
   ObjectFinder finder_;
   MotionDetector motion_;
   MotionDetector::Motion moved_;
-  std::vector<Point2i> moved_before_;  // the changed samples of the frame before
+  MotionDetector::Motion moved_before_;  // of the last frame before this one that showed motion
   Mask silhouette_, first_;
   SilhouettePieces pieces_;
   Trace piece_trace_;

@@ -65,9 +65,10 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
             (r0[2 * x] + r0[2 * x + 1] + r1[2 * x] + r1[2 * x + 1] + 2) >> 2);
       continue;
     }
-    if (s <= 257 && full == w) {
+    if (s <= 257) {
       // Column sums first (contiguous adds, which the compiler vectorises; s rows of 255 fit in
-      // 16 bits), then each block's s columns: the frame is still read once.
+      // 16 bits), then each block's columns (fewer than s in a last block the frame cuts): the
+      // frame is still read once.
       const int span = fx1 - fx0;
       columns_.assign(static_cast<std::size_t>(span), 0);
       std::uint16_t* col = columns_.data();
@@ -75,11 +76,13 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
         const std::uint8_t* row = frame.luma.row(fy) + fx0;
         for (int i = 0; i < span; ++i) col[i] = static_cast<std::uint16_t>(col[i] + row[i]);
       }
-      const std::uint32_t count = static_cast<std::uint32_t>(s * (fy1 - fy0));
-      for (int x = 0; x < w; ++x, col += s) {
+      const int rows = fy1 - fy0;
+      for (int x = 0; x < w; ++x) {
+        const int c0 = x * s, c1 = std::min(span, c0 + s);
         std::uint32_t sum = 0;
-        for (int k = 0; k < s; ++k) sum += col[k];
-        out[x] = static_cast<std::uint8_t>((sum + count / 2) / count);
+        for (int k = c0; k < c1; ++k) sum += col[k];
+        const std::uint32_t count = static_cast<std::uint32_t>(std::max(0, c1 - c0) * rows);
+        out[x] = static_cast<std::uint8_t>(count > 0 ? (sum + count / 2) / count : 0);
       }
       continue;
     }

@@ -185,7 +185,7 @@ TEST(WorkFrame, BlocksAreTheMeansOfTheirPixels) {
   // Regions clipped to the frame's blocks (the last ones partial unless s divides the frame),
   // and regions inside it (all blocks whole).
   for (const bool inside : {false, true})
-    for (int s : {1, 2, 3, 4, 5, 7, 8}) {
+    for (int s : {1, 2, 3, 4, 5, 7, 8, 9, 13}) {
       WorkFrame wf;
       const Rect blocks{0, 0, (64 + s - 1) / s, (48 + s - 1) / s};
       const Rect region =

@@ -182,6 +182,38 @@ TEST(ObjectModel, NoSeedAnObjectThatStopsIsStillTrackedAndNotTheBackground) {
   EXPECT_LT(found_at, 27);  // found while it moved, then held 23 still frames
 }
 
+// The frame at which auto acquisition first reports an object that creeps 1 px to the right on
+// every other frame (the frames between repeat it, as a camera or an encoder repeats frames),
+// or -1: an evenly coloured object that moves this little changes only along its outline.
+int creeping_found_at(const TrackerParams& tp) {
+  Tracker t;
+  Scene s;
+  s.arm = false;
+  s.radius = 70;
+  for (int i = 0; i < 30; ++i) {
+    s.centre.x = 150 + (i + 1) / 2;
+    s.seed = (i + 1) / 2;  // a repeated frame is the same frame, noise included
+    const Frame f = render(s);
+    const TrackResult r =
+        t.track(f.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp);
+    if (has_features(r.status)) {
+      expect_close(r, f, 4, 0.15, "found creeping");
+      return i;
+    }
+  }
+  return -1;
+}
+
+TEST(ObjectModel, NoSeedAnObjectThatBarelyMovesIsFoundByItsMovingOutline) {
+  // Its changed pixels are under 2 % of its area, but a good share of the band along its outline.
+  const int found = creeping_found_at({});
+  EXPECT_GE(found, 2);
+  EXPECT_LE(found, 6);
+  TrackerParams by_area_alone;
+  by_area_alone.finder.min_moving_outline = 1e9;
+  EXPECT_EQ(creeping_found_at(by_area_alone), -1);
+}
+
 // `f` in a dim light: luma at `gain` of its range above black, chroma at 80 % of its swing.
 Frame dimmed(Frame f, double gain) {
   const int n = f.truth.cols * f.truth.rows;
