@@ -1,30 +1,18 @@
 #include "gap_tolerant_filling.hpp"
 
 #include <algorithm>
-#include <cstring>
 
+#include "byte_words.hpp"
 #include "vector_clones.hpp"
 
 namespace projtrack {
 
 namespace {
 
-// High bit of every non-zero byte of v set, every other bit clear.
-inline std::uint64_t nonzero_bytes(std::uint64_t v) {
-  constexpr std::uint64_t kLow7 = 0x7F7F7F7F7F7F7F7Full;
-  return (((v & kLow7) + kLow7) | v) & ~kLow7;
-}
-
 // near[i] = off wherever the row has an edge: one pass of a row beside a horizontal line.
 PROJTRACK_VECTOR_CLONES void mark_near(const std::uint8_t* __restrict__ row,
                                        std::uint8_t* __restrict__ near, int n, std::uint8_t off) {
   for (int i = 0; i < n; ++i) near[i] = row[i] ? off : near[i];
-}
-
-inline std::uint64_t load8(const std::uint8_t* p) {
-  std::uint64_t v;
-  std::memcpy(&v, p, 8);
-  return v;
 }
 
 }  // namespace

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "byte_words.hpp"
+#include "vector_clones.hpp"
+
 namespace projtrack {
 
 void Mask::reset(const Rect& r) {
@@ -35,6 +38,25 @@ void Mask::crop() {
   rect_ = {rect_.x + b.x, rect_.y + b.y, b.width, b.height};
 }
 
+namespace {
+
+// The first x in [from, w) whose pixel is set (`set`) or unset (!`set`), or w; eight pixels at a
+// time through the stretches without one.
+int next_run(const std::uint8_t* row, int from, int w, bool set) {
+  constexpr std::uint64_t kHigh = 0x8080808080808080ull;
+  int x = from;
+  for (; x + 8 <= w; x += 8) {
+    const std::uint64_t bytes = nonzero_bytes(load8(row + x));
+    const std::uint64_t hits = set ? bytes : bytes ^ kHigh;
+    if (hits) return x + first_byte(hits);
+  }
+  for (; x < w; ++x)
+    if ((row[x] != 0) == set) return x;
+  return w;
+}
+
+}  // namespace
+
 MaskMoments moments(const Mask& m) {
   MaskMoments out;
   const Rect& r = m.rect();
@@ -43,14 +65,16 @@ MaskMoments moments(const Mask& m) {
   BoundsAccumulator bounds;
   for (int y = 0; y < r.height; ++y) {
     const std::uint8_t* row = m.row(y);
+    // Run by run: a run [a, b) adds b - a pixels and the sum of a .. b - 1.
     std::size_t row_n = 0, row_sx = 0;
     int first = -1, last = -1;
-    for (int x = 0; x < r.width; ++x) {
-      if (!row[x]) continue;
-      ++row_n;
-      row_sx += x;
-      if (first < 0) first = x;
-      last = x;
+    for (int a = next_run(row, 0, r.width, true); a < r.width;) {
+      const int b = next_run(row, a, r.width, false);
+      row_n += static_cast<std::size_t>(b - a);
+      row_sx += (static_cast<std::size_t>(a) + b - 1) * static_cast<std::size_t>(b - a) / 2;
+      if (first < 0) first = a;
+      last = b - 1;
+      a = next_run(row, b, r.width, true);
     }
     if (!row_n) continue;
     n += row_n;
@@ -139,24 +163,45 @@ bool MaskOps::keep_component(Mask& m, Point2i p) {
 // Chebyshev dilation by r (or, with `invert`, the same of the unset pixels and everything outside
 // the mask, which is the complement of the erosion): along each row, then each column, a pixel
 // is reached when the nearest seed in that direction lies within r.
+namespace {
+
+// One row of a column pass: d (per column, the rows since the last reached one, saturated at
+// cap) steps on by this row `in`; `out` gets the columns within reach.
+PROJTRACK_VECTOR_CLONES void column_step(const std::uint8_t* __restrict__ in,
+                                         std::uint8_t* __restrict__ d,
+                                         std::uint8_t* __restrict__ out, int w, std::uint8_t cap) {
+  for (int x = 0; x < w; ++x) {
+    const std::uint8_t next = d[x] < cap ? static_cast<std::uint8_t>(d[x] + 1) : cap;
+    const std::uint8_t v = in[x] ? 0 : next;
+    d[x] = v;
+    out[x] |= static_cast<std::uint8_t>(v < cap);
+  }
+}
+
+}  // namespace
+
 void MaskOps::spread(const Mask& src, int r, bool invert, Mask& dst) {
   const Rect& rect = src.rect();
   const int w = rect.width, h = rect.height;
   dst.reset(rect);
   if (w == 0 || h == 0) return;
-  const std::uint8_t seed = invert ? 0 : 1;
+  // Rows: each run of seed pixels (set ones; unset ones when inverting, outside the mask
+  // included) marks itself and r pixels either side. dst was cleared by reset().
   for (int y = 0; y < h; ++y) {
     const std::uint8_t* in = src.row(y);
     std::uint8_t* out = dst.row(y);
-    int last = invert ? -1 : -r - 1;  // outside the mask is a seed of the complement
-    for (int x = 0; x < w; ++x) {
-      if ((in[x] != 0) == (seed != 0)) last = x;
-      out[x] = x - last <= r;
+    const auto mark = [&](int a, int b) {  // the run [a, b], spread, clipped to the row
+      const int x0 = std::max(0, a - r), x1 = std::min(w - 1, b + r);
+      if (x0 <= x1) std::fill(out + x0, out + x1 + 1, 1);
+    };
+    if (invert) {
+      mark(-1, -1);
+      mark(w, w);
     }
-    last = invert ? w : w + r + 1;
-    for (int x = w - 1; x >= 0; --x) {
-      if ((in[x] != 0) == (seed != 0)) last = x;
-      out[x] |= last - x <= r;
+    for (int x = next_run(in, 0, w, !invert); x < w;) {
+      const int end = next_run(in, x, w, invert);
+      mark(x, end - 1);
+      x = next_run(in, end, w, !invert);
     }
   }
   // Columns, row by row: distance to the nearest reached row above, then below (saturated at
@@ -165,14 +210,7 @@ void MaskOps::spread(const Mask& src, int r, bool invert, Mask& dst) {
   column_.assign(static_cast<std::size_t>(w), static_cast<std::uint8_t>(invert ? 0 : cap));
   tmp_.reset(rect);
   const auto pass = [&](int y) {
-    const std::uint8_t* in = dst.row(y);
-    std::uint8_t* out = tmp_.row(y);
-    std::uint8_t* d = column_.data();
-    for (int x = 0; x < w; ++x) {
-      const int next = d[x] + 1;
-      d[x] = static_cast<std::uint8_t>(in[x] ? 0 : (next < cap ? next : cap));
-      out[x] |= static_cast<std::uint8_t>(d[x] < cap);
-    }
+    column_step(dst.row(y), column_.data(), tmp_.row(y), w, static_cast<std::uint8_t>(cap));
   };
   for (int y = 0; y < h; ++y) pass(y);
   std::fill(column_.begin(), column_.end(), static_cast<std::uint8_t>(invert ? 0 : cap));

@@ -43,9 +43,10 @@ cv::Mat random_mask(std::mt19937& rng, int w, int h) {
 TEST(Mask, DilateAndErodeAreOpenCvsWithASquare) {
   std::mt19937 rng(7);
   MaskOps ops;
-  for (int trial = 0; trial < 200; ++trial) {
-    const int w = 1 + static_cast<int>(rng() % 60), h = 1 + static_cast<int>(rng() % 50);
-    const int r = static_cast<int>(rng() % 8);
+  for (int trial = 0; trial < 300; ++trial) {
+    // Rows wider than 8 bytes too: runs are found a word at a time.
+    const int w = 1 + static_cast<int>(rng() % 150), h = 1 + static_cast<int>(rng() % 50);
+    const int r = static_cast<int>(rng() % 10);
     const cv::Mat m = random_mask(rng, w, h);
     const Mask mask = to_mask(m, {5, -3});
     Mask out;
@@ -60,6 +61,22 @@ TEST(Mask, DilateAndErodeAreOpenCvsWithASquare) {
     cv::erode(m, expect, kernel, {-1, -1}, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
     ops.erode(mask, r, out);
     ASSERT_EQ(cv::countNonZero(to_mat(out) != expect), 0) << "erode " << w << "x" << h << " r" << r;
+  }
+}
+
+TEST(Mask, MomentsAreOpenCvs) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int w = 1 + static_cast<int>(rng() % 150), h = 1 + static_cast<int>(rng() % 50);
+    const cv::Mat m = random_mask(rng, w, h);
+    const MaskMoments got = moments(to_mask(m, {-7, 4}));
+    const cv::Moments expect = cv::moments(m, true);
+    ASSERT_EQ(got.area, expect.m00);
+    if (expect.m00 == 0) continue;
+    EXPECT_NEAR(got.centroid.x, expect.m10 / expect.m00 - 7, 1e-9);
+    EXPECT_NEAR(got.centroid.y, expect.m01 / expect.m00 + 4, 1e-9);
+    const cv::Rect b = cv::boundingRect(m);
+    EXPECT_EQ(got.bbox, (Rect{b.x - 7, b.y + 4, b.width, b.height}));
   }
 }
 
