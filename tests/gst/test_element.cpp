@@ -647,7 +647,8 @@ TEST(OnChange, AcquisitionsArePostedAfterALossAndWhileTracking) {
 }
 
 // The object's outline (the appearance model's silhouette) is drawn along the disc's border, all
-// the way round, and nowhere else: in a format with subsampled chroma and in packed RGB.
+// the way round, as a line (not over the disc): in formats with subsampled chroma and in packed
+// RGB.
 TEST_F(Element, OverlayDrawsTheOutlineAlongTheObjectsBorder) {
   // At 640×480, away from the text panel at the top left.
   const DiscFrame scene{640, 480, 420, 300, 80};
