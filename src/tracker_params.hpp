@@ -1,13 +1,42 @@
 // Everything that tunes the tracker, stage by stage.
 #pragma once
 
+#include <cstddef>
+#include <new>
+
 #include "motion_detector.hpp"
-#include "object_finder.hpp"
-#include "object_model.hpp"
 #include "one_euro_filter.hpp"
 #include "push_detector.hpp"
 
 namespace projtrack {
+
+// The appearance model's tuning, declared only: defined with its stages (object_model.hpp,
+// object_finder.hpp), which are not installed.
+struct ObjectModelParams;
+struct FinderParams;
+
+// A value of type T held without T's definition, so that TrackerParams carries the appearance
+// model's tuning while applications see none of its headers: a copy of its defaults on
+// construction, copied with the TrackerParams that holds it, read and set through get() (or ->)
+// by code that includes T's header. In place (no allocation): T fits in kSize bytes and is
+// trivially copyable, as tracker_params.cpp checks. The library's own code uses it; applications
+// leave it at its defaults.
+template <class T, std::size_t kSize>
+class Opaque {
+ public:
+  Opaque();
+  Opaque(const Opaque& other);
+  Opaque& operator=(const Opaque& other);
+  ~Opaque() = default;  // T is trivially destructible
+
+  T& get() { return *std::launder(reinterpret_cast<T*>(bytes_)); }
+  const T& get() const { return *std::launder(reinterpret_cast<const T*>(bytes_)); }
+  T* operator->() { return &get(); }
+  const T* operator->() const { return &get(); }
+
+ private:
+  alignas(alignof(std::max_align_t)) unsigned char bytes_[kSize];
+};
 
 // How tracking starts when there is no object.
 enum class Acquisition {
@@ -60,9 +89,10 @@ struct TrackerParams {
   // the margin, then on the whole frame. Negative: always the whole frame.
   double edge_margin = 0.1;
 
-  // Appearance model: how it finds, segments and learns the object.
-  ObjectModelParams object;
-  FinderParams finder;
+  // Appearance model: how it finds, segments and learns the object (ObjectModelParams in
+  // object_model.hpp, FinderParams in object_finder.hpp).
+  Opaque<ObjectModelParams, 256> object;
+  Opaque<FinderParams, 256> finder;
   // The grey-level thresholds of motion (MotionDetector::Params::threshold) and of the
   // background (FinderParams::background_change) hold for a scene whose luma spans this many
   // levels (2nd to 98th percentile); in a dimmer one, whose changes are as much smaller, they

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "object_model.hpp"
 #include "tracker.hpp"
 
 namespace projtrack {
@@ -299,8 +300,8 @@ TEST(ObjectModel, TheSameAnswerAtAnyWorkScale) {
   s.radius = 90;
   const Frame f = render(s);
   TrackerParams fine, coarse;
-  fine.object.work_pixels = 1e9;  // scale 1
-  coarse.object.work_pixels = 2000;
+  fine.object->work_pixels = 1e9;  // scale 1
+  coarse.object->work_pixels = 2000;
   TrackResult a, b;
   Tracker ta, tb;
   ta.seed({300, 240});
