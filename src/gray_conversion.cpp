@@ -43,8 +43,25 @@ void packed_rgb_to_chroma(const std::uint8_t* r, const std::uint8_t* g, const st
   }
 }
 
+namespace {
+// The pixel stride as a constant, and rows that do not overlap, let the compiler vectorise the
+// loop: YUY2's luma (stride 2) is gathered at 4× the speed of the loop with a variable stride
+// (docs/element.md, "Formats").
+template <int kPixelStride>
+void gather(const std::uint8_t* first, std::ptrdiff_t row_stride, int width, int height,
+            std::uint8_t* out, std::ptrdiff_t out_stride) {
+  for (int y = 0; y < height; ++y) {
+    const std::uint8_t* __restrict in = first + y * row_stride;
+    std::uint8_t* __restrict o = out + y * out_stride;
+    for (int x = 0; x < width; ++x) o[x] = in[static_cast<std::ptrdiff_t>(x) * kPixelStride];
+  }
+}
+}  // namespace
+
 void gather_component(const std::uint8_t* first, int pixel_stride, std::ptrdiff_t row_stride,
                       int width, int height, std::uint8_t* out, std::ptrdiff_t out_stride) {
+  if (pixel_stride == 2) return gather<2>(first, row_stride, width, height, out, out_stride);
+  if (pixel_stride == 1) return gather<1>(first, row_stride, width, height, out, out_stride);
   for (int y = 0; y < height; ++y) {
     const std::uint8_t* in = first + y * row_stride;
     std::uint8_t* o = out + y * out_stride;

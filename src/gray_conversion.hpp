@@ -19,7 +19,8 @@ void packed_rgb_to_gray(const std::uint8_t* r, const std::uint8_t* g, const std:
                         std::uint8_t* gray, std::ptrdiff_t gray_stride);
 
 // One component of a packed format (YUY2's or UYVY's luma: every second byte) into a plane of
-// its own; rows of both images may be padded.
+// its own; rows of both images may be padded (and run bottom-up: a negative `row_stride`). The
+// images must not overlap. Pixel strides 1 and 2 are vectorised.
 void gather_component(const std::uint8_t* first, int pixel_stride, std::ptrdiff_t row_stride,
                       int width, int height, std::uint8_t* out, std::ptrdiff_t out_stride);
 

@@ -3,17 +3,11 @@
 
 #include "features.hpp"
 #include "one_euro_filter.hpp"
+#include "pose.hpp"
 #include "push_detector.hpp"
 #include "tracker_params.hpp"
 
 namespace projtrack {
-
-// x, y in [-1, 1] from the centroid (0 at the frame centre, +1 at the right and bottom edges);
-// depth 1 when the object was first acquired, then sqrt(area / area then): it rises as the
-// object nears the camera.
-struct Pose {
-  double x = 0, y = 0, depth = 1;
-};
 
 class Pointer {
  public:

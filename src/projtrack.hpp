@@ -9,6 +9,7 @@
 #include "image_view.hpp"
 #include "method.hpp"
 #include "params.hpp"
+#include "pose.hpp"
 #include "status.hpp"
 #include "trace.hpp"
 #include "tracker.hpp"

@@ -1,32 +1,148 @@
 #include "tracker.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bitset>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "edge_region.hpp"
+#include "edge_source.hpp"
+#include "estimator.hpp"
+#include "mask.hpp"
+#include "motion_acquisition.hpp"
+#include "object_finder.hpp"
+#include "object_model.hpp"
 #include "plausibility.hpp"
+#include "pointer.hpp"
+#include "silhouette_pieces.hpp"
 
 namespace projtrack {
 
-void Tracker::seed(Point2i p) {
+// What was Tracker's own: every stage and the state between frames, behind Tracker's pointer so
+// that its header needs none of theirs. Tracker's public functions forward here.
+struct Tracker::Impl {
+  // Tracker's public functions (tracker.hpp).
+  void seed(Point2i p);
+  void seed_box(const Rect& box);
+  void reset();
+  const std::optional<Point2i>& inner_point() const { return inner_; }
+  TrackResult track(const ColorView& frame, const EdgeParams& edge_params, double t, Method m,
+                    const Params& params, const TrackerParams& tp, Trace* trace);
+  TrackResult track(const ImageView& gray, const EdgeParams& edge_params, double t, Method m,
+                    const Params& params, const TrackerParams& tp, Trace* trace);
+  TrackResult track(const ColorView& frame, const ImageView& edges, double t, Method m,
+                    const Params& params, const TrackerParams& tp, Trace* trace);
+  TrackResult track(const ImageView& gray, const ImageView& edges, double t, Method m,
+                    const Params& params, const TrackerParams& tp, Trace* trace);
+
+  // What was Tracker's private part.
+  TrackResult track(const ColorView& frame, EdgeSource& edges, double t, Method m,
+                    const Params& params, const TrackerParams& tp, Trace* trace);
+  TrackResult track_edges(const ColorView& frame, EdgeSource& edges, double t, Method m,
+                          const Params& params, const TrackerParams& tp, Trace* trace);
+  TrackResult track_appearance(const ColorView& frame, EdgeSource& edges, double t, Method m,
+                               const Params& params, const TrackerParams& tp, Trace* trace);
+  // The appearance model's first silhouette of an object: around the inner point, where its
+  // colours are (an object lost before), or where the frame moves. False and `why` when none.
+  bool find_object(const ColorView& frame, EdgeSource& edges, const TrackerParams& tp,
+                   bool& resumed, std::string& why);
+  // The estimator on the outline of silhouette_, from the inner point (or the silhouette's
+  // deepest point when the inner point is not in it).
+  Features estimate_on_silhouette(Method m, const Params& params, int width, int height,
+                                  Trace* trace);
+  Estimator& estimator(Method m);
+  // Takes `f` as this frame's estimate; `resumed`: the same object found again after a loss.
+  void accept(const Features& f, double t, int width, int height, const TrackerParams& tp,
+              bool resumed, TrackResult& r);
+  // Refuses this frame's estimate: reports the last accepted one; after `patience` refusals in
+  // a row drops the track (the appearance model keeps the object's colours to find it again).
+  void refuse(std::string why, const TrackerParams& tp, TrackResult& r);
+  // Forgets where the object is; `keep_object`: its colours and its first area stay known.
+  void drop(bool keep_object);
+  // tp's motion and finder parameters with their grey-level thresholds scaled to the scene's
+  // contrast (TrackerParams::full_contrast), as the last frame compared showed it.
+  MotionDetector::Params motion_params(const TrackerParams& tp) const;
+  FinderParams finder_params(const TrackerParams& tp) const;
+
+  EdgeMap edge_map_;
+  std::array<std::unique_ptr<Estimator>, kMethodCount> estimators_;  // made on first use
+  std::optional<Point2i> inner_;
+  std::optional<Rect> box_;  // the box a track was seeded with, until it starts
+  std::optional<Features> last_good_;
+  Point2d velocity_;  // of the centroid between the last two accepted frames, px per frame
+  int refused_in_a_row_ = 0;
+  std::uint32_t recent_refusals_ = 0;  // a bit per frame since the track started, newest lowest
+  Pointer pointer_;
+  ObjectModelKind model_ = ObjectModelKind::Appearance;
+
+  // Edges model.
+  MotionAcquisition acquisition_;
+
+  // Appearance model.
+  ObjectModel object_;
+  ObjectFinder finder_;
+  MotionDetector motion_;
+  MotionDetector::Motion moved_;
+  MotionDetector::Motion moved_before_;  // of the last frame before this one that showed motion
+  Mask silhouette_, first_;
+  SilhouettePieces pieces_;
+  Trace piece_trace_;
+  bool split_ = false;  // estimate_on_silhouette() cuts the silhouette into pieces
+  MaskOps ops_;
+  std::vector<std::uint8_t> barrier_;
+  double lost_area_ = 0;  // the object's area and centroid when it was lost
+  Point2d lost_centroid_;
+  int searched_ = 0;     // frames searched by colour since the loss
+  bool seeded_ = false;  // the track started from the user's point or box
+  int still_ = 0;        // frames in a row the object has not moved
+};
+
+Tracker::Tracker() : impl_(std::make_unique<Impl>()) {}
+Tracker::~Tracker() = default;
+Tracker::Tracker(Tracker&&) noexcept = default;
+Tracker& Tracker::operator=(Tracker&&) noexcept = default;
+
+void Tracker::seed(Point2i p) { impl_->seed(p); }
+void Tracker::seed_box(const Rect& box) { impl_->seed_box(box); }
+void Tracker::reset() { impl_->reset(); }
+const std::optional<Point2i>& Tracker::inner_point() const { return impl_->inner_point(); }
+
+TrackResult Tracker::track(const ColorView& frame, const EdgeParams& edge_params, double t,
+                           Method m, const Params& params, const TrackerParams& tp, Trace* trace) {
+  return impl_->track(frame, edge_params, t, m, params, tp, trace);
+}
+TrackResult Tracker::track(const ImageView& gray, const EdgeParams& edge_params, double t, Method m,
+                           const Params& params, const TrackerParams& tp, Trace* trace) {
+  return impl_->track(gray, edge_params, t, m, params, tp, trace);
+}
+TrackResult Tracker::track(const ColorView& frame, const ImageView& edges, double t, Method m,
+                           const Params& params, const TrackerParams& tp, Trace* trace) {
+  return impl_->track(frame, edges, t, m, params, tp, trace);
+}
+TrackResult Tracker::track(const ImageView& gray, const ImageView& edges, double t, Method m,
+                           const Params& params, const TrackerParams& tp, Trace* trace) {
+  return impl_->track(gray, edges, t, m, params, tp, trace);
+}
+
+void Tracker::Impl::seed(Point2i p) {
   reset();
   inner_ = p;
 }
 
-void Tracker::seed_box(const Rect& box) {
+void Tracker::Impl::seed_box(const Rect& box) {
   reset();
   inner_ = Point2i{box.x + box.width / 2, box.y + box.height / 2};
   box_ = box;
 }
 
-void Tracker::reset() {
+void Tracker::Impl::reset() {
   drop(false);
   acquisition_.reset();
 }
 
-void Tracker::drop(bool keep_object) {
+void Tracker::Impl::drop(bool keep_object) {
   if (last_good_) {
     lost_area_ = last_good_->area;
     lost_centroid_ = last_good_->centroid;
@@ -49,14 +165,14 @@ void Tracker::drop(bool keep_object) {
   }
 }
 
-Estimator& Tracker::estimator(Method m) {
+Estimator& Tracker::Impl::estimator(Method m) {
   auto& e = estimators_[static_cast<int>(m)];
   if (!e) e = method_info(m).make();
   return *e;
 }
 
-void Tracker::accept(const Features& f, double t, int width, int height, const TrackerParams& tp,
-                     bool resumed, TrackResult& r) {
+void Tracker::Impl::accept(const Features& f, double t, int width, int height,
+                           const TrackerParams& tp, bool resumed, TrackResult& r) {
   if (!last_good_) {  // a track (re)starts here
     seeded_ = inner_.has_value() && !resumed;
     still_ = 0;
@@ -92,20 +208,20 @@ double contrast(int spread, const TrackerParams& tp) {
 
 }  // namespace
 
-MotionDetector::Params Tracker::motion_params(const TrackerParams& tp) const {
+MotionDetector::Params Tracker::Impl::motion_params(const TrackerParams& tp) const {
   MotionDetector::Params p = tp.motion;
   p.threshold = static_cast<int>(std::lround(p.threshold * contrast(motion_.spread(), tp)));
   return p;
 }
 
-FinderParams Tracker::finder_params(const TrackerParams& tp) const {
+FinderParams Tracker::Impl::finder_params(const TrackerParams& tp) const {
   FinderParams p = tp.finder;
   p.background_change =
       static_cast<int>(std::lround(p.background_change * contrast(motion_.spread(), tp)));
   return p;
 }
 
-void Tracker::refuse(std::string why, const TrackerParams& tp, TrackResult& r) {
+void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult& r) {
   ++refused_in_a_row_;
   recent_refusals_ = (recent_refusals_ << 1) | 1u;
   r.status = Status::Lost;
@@ -131,30 +247,32 @@ void Tracker::refuse(std::string why, const TrackerParams& tp, TrackResult& r) {
   }
 }
 
-TrackResult Tracker::track(const ColorView& frame, const EdgeParams& edge_params, double t,
-                           Method m, const Params& params, const TrackerParams& tp, Trace* trace) {
+TrackResult Tracker::Impl::track(const ColorView& frame, const EdgeParams& edge_params, double t,
+                                 Method m, const Params& params, const TrackerParams& tp,
+                                 Trace* trace) {
   EdgeSource edges(edge_map_, frame.luma, edge_params);
   return track(frame, edges, t, m, params, tp, trace);
 }
 
-TrackResult Tracker::track(const ImageView& gray, const EdgeParams& edge_params, double t, Method m,
-                           const Params& params, const TrackerParams& tp, Trace* trace) {
+TrackResult Tracker::Impl::track(const ImageView& gray, const EdgeParams& edge_params, double t,
+                                 Method m, const Params& params, const TrackerParams& tp,
+                                 Trace* trace) {
   return track(ColorView{gray, {}}, edge_params, t, m, params, tp, trace);
 }
 
-TrackResult Tracker::track(const ColorView& frame, const ImageView& edges, double t, Method m,
-                           const Params& params, const TrackerParams& tp, Trace* trace) {
+TrackResult Tracker::Impl::track(const ColorView& frame, const ImageView& edges, double t, Method m,
+                                 const Params& params, const TrackerParams& tp, Trace* trace) {
   EdgeSource given(edges);
   return track(frame, given, t, m, params, tp, trace);
 }
 
-TrackResult Tracker::track(const ImageView& gray, const ImageView& edges, double t, Method m,
-                           const Params& params, const TrackerParams& tp, Trace* trace) {
+TrackResult Tracker::Impl::track(const ImageView& gray, const ImageView& edges, double t, Method m,
+                                 const Params& params, const TrackerParams& tp, Trace* trace) {
   return track(ColorView{gray, {}}, edges, t, m, params, tp, trace);
 }
 
-TrackResult Tracker::track(const ColorView& frame, EdgeSource& edges, double t, Method m,
-                           const Params& params, const TrackerParams& tp, Trace* trace) {
+TrackResult Tracker::Impl::track(const ColorView& frame, EdgeSource& edges, double t, Method m,
+                                 const Params& params, const TrackerParams& tp, Trace* trace) {
   if (trace) trace->clear();
   const ImageView& luma = edges.frame();
   if (!luma.valid() || !frame.luma.valid() || frame.luma.width != luma.width ||
@@ -189,8 +307,9 @@ TrackResult Tracker::track(const ColorView& frame, EdgeSource& edges, double t, 
 
 // ---- The edges model: the paper's tracker ----------------------------------------------------
 
-TrackResult Tracker::track_edges(const ColorView& frame, EdgeSource& edges, double t, Method m,
-                                 const Params& params, const TrackerParams& tp, Trace* trace) {
+TrackResult Tracker::Impl::track_edges(const ColorView& frame, EdgeSource& edges, double t,
+                                       Method m, const Params& params, const TrackerParams& tp,
+                                       Trace* trace) {
   TrackResult r;
   const int w = frame.luma.width, h = frame.luma.height;
   const Features* last = last_good_ ? &*last_good_ : nullptr;
@@ -227,8 +346,8 @@ TrackResult Tracker::track_edges(const ColorView& frame, EdgeSource& edges, doub
 
 // ---- The appearance model: real footage -------------------------------------------------------
 
-bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const TrackerParams& tp,
-                          bool& resumed, std::string& why) {
+bool Tracker::Impl::find_object(const ColorView& frame, EdgeSource& edges, const TrackerParams& tp,
+                                bool& resumed, std::string& why) {
   const int w = frame.luma.width, h = frame.luma.height;
   const FinderParams fp = finder_params(tp);
   Point2i seed{w / 2, h / 2};
@@ -304,8 +423,8 @@ bool Tracker::find_object(const ColorView& frame, EdgeSource& edges, const Track
   return true;
 }
 
-Features Tracker::estimate_on_silhouette(Method m, const Params& params, int width, int height,
-                                         Trace* trace) {
+Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, int width,
+                                               int height, Trace* trace) {
   // The silhouette's outline is closed: there is no leak to stop and no gap to tolerate (a
   // narrow neck of the object is not a break in its contour).
   Params closed = params;
@@ -409,8 +528,9 @@ Features Tracker::estimate_on_silhouette(Method m, const Params& params, int wid
   return total;
 }
 
-TrackResult Tracker::track_appearance(const ColorView& frame, EdgeSource& edges, double t, Method m,
-                                      const Params& params, const TrackerParams& tp, Trace* trace) {
+TrackResult Tracker::Impl::track_appearance(const ColorView& frame, EdgeSource& edges, double t,
+                                            Method m, const Params& params, const TrackerParams& tp,
+                                            Trace* trace) {
   TrackResult r;
   const int w = frame.luma.width, h = frame.luma.height;
   if (!object_.tracking()) {

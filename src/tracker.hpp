@@ -9,22 +9,19 @@
 // themselves (edge_region), as in the paper, and motion_acquisition finds new objects.
 #pragma once
 
-#include <array>
 #include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "color_view.hpp"
 #include "edge_detection.hpp"
-#include "edge_source.hpp"
-#include "estimator.hpp"
-#include "mask.hpp"
-#include "motion_acquisition.hpp"
-#include "object_finder.hpp"
-#include "object_model.hpp"
-#include "pointer.hpp"
-#include "silhouette_pieces.hpp"
+#include "features.hpp"
+#include "geometry.hpp"
+#include "image_view.hpp"
+#include "method.hpp"
+#include "params.hpp"
+#include "pose.hpp"
+#include "trace.hpp"
 #include "tracker_params.hpp"
 
 namespace projtrack {
@@ -42,6 +39,11 @@ struct TrackResult {
 
 class Tracker {
  public:
+  Tracker();
+  ~Tracker();
+  Tracker(Tracker&&) noexcept;  // a moved-from Tracker can only be assigned to or destroyed
+  Tracker& operator=(Tracker&&) noexcept;
+
   // Tracks from `p` on the next frame, whatever the acquisition mode: a new object.
   void seed(Point2i p);
   // Tracks the object in `box` (a user's rectangle around it) on the next frame: its centre is
@@ -49,7 +51,7 @@ class Tracker {
   void seed_box(const Rect& box);
   // Forgets the object; Auto and Center acquisition start over.
   void reset();
-  const std::optional<Point2i>& inner_point() const { return inner_; }
+  const std::optional<Point2i>& inner_point() const;
 
   // One frame taken at `t` seconds, with edges computed here with `edge_params`: only around the
   // object while tracking. A frame with chroma gives the appearance model its colours; a gray
@@ -65,65 +67,10 @@ class Tracker {
                     const Params& params, const TrackerParams& tp, Trace* trace = nullptr);
 
  private:
-  TrackResult track(const ColorView& frame, EdgeSource& edges, double t, Method m,
-                    const Params& params, const TrackerParams& tp, Trace* trace);
-  TrackResult track_edges(const ColorView& frame, EdgeSource& edges, double t, Method m,
-                          const Params& params, const TrackerParams& tp, Trace* trace);
-  TrackResult track_appearance(const ColorView& frame, EdgeSource& edges, double t, Method m,
-                               const Params& params, const TrackerParams& tp, Trace* trace);
-  // The appearance model's first silhouette of an object: around the inner point, where its
-  // colours are (an object lost before), or where the frame moves. False and `why` when none.
-  bool find_object(const ColorView& frame, EdgeSource& edges, const TrackerParams& tp,
-                   bool& resumed, std::string& why);
-  // The estimator on the outline of silhouette_, from the inner point (or the silhouette's
-  // deepest point when the inner point is not in it).
-  Features estimate_on_silhouette(Method m, const Params& params, int width, int height,
-                                  Trace* trace);
-  Estimator& estimator(Method m);
-  // Takes `f` as this frame's estimate; `resumed`: the same object found again after a loss.
-  void accept(const Features& f, double t, int width, int height, const TrackerParams& tp,
-              bool resumed, TrackResult& r);
-  // Refuses this frame's estimate: reports the last accepted one; after `patience` refusals in
-  // a row drops the track (the appearance model keeps the object's colours to find it again).
-  void refuse(std::string why, const TrackerParams& tp, TrackResult& r);
-  // Forgets where the object is; `keep_object`: its colours and its first area stay known.
-  void drop(bool keep_object);
-  // tp's motion and finder parameters with their grey-level thresholds scaled to the scene's
-  // contrast (TrackerParams::full_contrast), as the last frame compared showed it.
-  MotionDetector::Params motion_params(const TrackerParams& tp) const;
-  FinderParams finder_params(const TrackerParams& tp) const;
-
-  EdgeMap edge_map_;
-  std::array<std::unique_ptr<Estimator>, kMethodCount> estimators_;  // made on first use
-  std::optional<Point2i> inner_;
-  std::optional<Rect> box_;  // the box a track was seeded with, until it starts
-  std::optional<Features> last_good_;
-  Point2d velocity_;  // of the centroid between the last two accepted frames, px per frame
-  int refused_in_a_row_ = 0;
-  std::uint32_t recent_refusals_ = 0;  // a bit per frame since the track started, newest lowest
-  Pointer pointer_;
-  ObjectModelKind model_ = ObjectModelKind::Appearance;
-
-  // Edges model.
-  MotionAcquisition acquisition_;
-
-  // Appearance model.
-  ObjectModel object_;
-  ObjectFinder finder_;
-  MotionDetector motion_;
-  MotionDetector::Motion moved_;
-  MotionDetector::Motion moved_before_;  // of the last frame before this one that showed motion
-  Mask silhouette_, first_;
-  SilhouettePieces pieces_;
-  Trace piece_trace_;
-  bool split_ = false;  // estimate_on_silhouette() cuts the silhouette into pieces
-  MaskOps ops_;
-  std::vector<std::uint8_t> barrier_;
-  double lost_area_ = 0;  // the object's area and centroid when it was lost
-  Point2d lost_centroid_;
-  int searched_ = 0;     // frames searched by colour since the loss
-  bool seeded_ = false;  // the track started from the user's point or box
-  int still_ = 0;        // frames in a row the object has not moved
+  // The stages and what they keep between frames (tracker.cpp): an application needs none of
+  // their headers.
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace projtrack

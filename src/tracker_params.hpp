@@ -1,9 +1,9 @@
 // Everything that tunes the tracker, stage by stage.
 #pragma once
 
+#include "finder_params.hpp"
 #include "motion_detector.hpp"
-#include "object_finder.hpp"
-#include "object_model.hpp"
+#include "object_model_params.hpp"
 #include "one_euro_filter.hpp"
 #include "push_detector.hpp"
 

@@ -1,4 +1,4 @@
-// Packed RGB to gray.
+// Packed RGB to gray; one component of a packed format gathered into a plane.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -31,6 +31,36 @@ TEST(GrayConversion, Bt601WeightsInEveryComponentOrderAndPixelSize) {
       for (int y = 0; y < 2; ++y) {
         for (int x = 0; x < 5; ++x) EXPECT_EQ(gray[y * 7 + x], expected[x]) << pixel_stride;
         EXPECT_EQ(gray[y * 7 + 5], 0xCD);  // padding untouched
+      }
+    }
+  }
+}
+
+// YUY2's luma (every second byte from the first), UYVY's (from the second), chroma planes
+// (stride 1) and any other pixel stride: every width, rows top-down or bottom-up, padding kept.
+TEST(GrayConversion, GatherOneComponentOfAPackedFormat) {
+  for (int pixel_stride : {1, 2, 3, 4}) {
+    for (int width : {1, 15, 16, 17, 37, 64}) {
+      for (int first : {0, 1}) {
+        for (bool bottom_up : {false, true}) {
+          SCOPED_TRACE(::testing::Message() << "stride " << pixel_stride << " width " << width
+                                            << " first " << first << " bottom-up " << bottom_up);
+          const int height = 3, row_stride = width * pixel_stride + 5, out_stride = width + 3;
+          std::vector<std::uint8_t> in(static_cast<std::size_t>(row_stride) * height);
+          for (std::size_t i = 0; i < in.size(); ++i) in[i] = static_cast<std::uint8_t>(i * 7 + 3);
+          std::vector<std::uint8_t> out(static_cast<std::size_t>(out_stride) * height, 0xCD);
+          const std::uint8_t* start =
+              in.data() + first + (bottom_up ? (height - 1) * row_stride : 0);
+          gather_component(start, pixel_stride, bottom_up ? -row_stride : row_stride, width, height,
+                           out.data(), out_stride);
+          for (int y = 0; y < height; ++y) {
+            const int row = bottom_up ? height - 1 - y : y;
+            for (int x = 0; x < width; ++x)
+              ASSERT_EQ(out[y * out_stride + x], in[row * row_stride + first + x * pixel_stride])
+                  << x << "," << y;
+            for (int x = width; x < out_stride; ++x) ASSERT_EQ(out[y * out_stride + x], 0xCD);
+          }
+        }
       }
     }
   }

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "object_model.hpp"
 #include "tracker.hpp"
 
 namespace projtrack {

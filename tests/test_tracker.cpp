@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "edge_detection.hpp"
+#include "estimator.hpp"
 #include "scenes.hpp"
 #include "tracker.hpp"
 

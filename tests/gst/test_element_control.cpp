@@ -252,7 +252,7 @@ TEST_F(Control, PackedYuvIsTrackedAsThePlanarFormats) {
   }
 }
 
-TEST(Inspect, PackageOriginContactAndBlurbsThatNameTheirMethods) {
+TEST(Inspect, PackageOriginContactAndBlurbsInAUsersWordsThatNameTheirMethods) {
   GstElementFactory* factory = gst_element_factory_find("projtrack");
   ASSERT_NE(factory, nullptr);
   const std::string author = gst_element_factory_get_metadata(factory, "author");
@@ -269,11 +269,33 @@ TEST(Inspect, PackageOriginContactAndBlurbsThatNameTheirMethods) {
   guint n = 0;
   GParamSpec** specs = g_object_class_list_properties(G_OBJECT_GET_CLASS(e), &n);
   const std::regex nick("[a-z]+(-[a-z]+)*-(ray-casting|filling)");
+  // The paper's notation: its symbols n (rays), y (recursion), m (block and grid size) alone or
+  // in its methods' names ("n-ray-casting", "n^y", "m×m", "m-grid-filling", "n ray hits").
+  const std::regex paper(
+      "(^|[^A-Za-z0-9_])(n\\^y|[nm](-|\\^|\\*|×|x[0-9a-z]|$|[ ,.:;)])|"
+      "[nmy] (ray|rays|hits|levels?|cells?|blocks?)\\b)");
+  const auto in_a_users_words = [&](const std::string& text) {
+    return !std::regex_search(text, paper);
+  };
+  ASSERT_FALSE(in_a_users_words("n-ray-casting: mean of n ray hits"));
+  ASSERT_FALSE(in_a_users_words("Iterative n^y-ray-casting with m-rasterization"));
+  ASSERT_FALSE(in_a_users_words("fill along a grid of m×m cells"));
+  ASSERT_FALSE(in_a_users_words("the m of the grid"));
+  ASSERT_FALSE(in_a_users_words("recast from every hit, y levels deep"));
+  ASSERT_TRUE(in_a_users_words("rays to the power recursion, max-gap px, 3x3 box blur, my way"));
+  ASSERT_TRUE(in_a_users_words("x, y and depth; inner-point-y"));
   int naming = 0;
   for (guint i = 0; i < n; ++i) {
     if (G_PARAM_SPEC_VALUE_TYPE(specs[i]) == G_TYPE_STRING) continue;  // name, GstObject's
     const std::string blurb = g_param_spec_get_blurb(specs[i]);
-    EXPECT_EQ(blurb.find("m of m-"), std::string::npos) << specs[i]->name;  // no paper notation
+    EXPECT_TRUE(in_a_users_words(blurb)) << specs[i]->name << ": " << blurb;
+    if (G_IS_PARAM_SPEC_ENUM(specs[i])) {  // what gst-inspect-1.0 lists for each value
+      const GEnumClass* values = G_PARAM_SPEC_ENUM(specs[i])->enum_class;
+      for (guint v = 0; v < values->n_values; ++v)
+        EXPECT_TRUE(in_a_users_words(values->values[v].value_name))
+            << specs[i]->name << " " << values->values[v].value_nick << ": "
+            << values->values[v].value_name;
+    }
     for (std::sregex_iterator m(blurb.begin(), blurb.end(), nick), end; m != end; ++m) {
       EXPECT_TRUE(projtrack::method_from_name(m->str())) << specs[i]->name << ": " << m->str();
       ++naming;

@@ -25,7 +25,9 @@ int main() {
   bool ok = f.valid() && std::hypot(f.centroid.x - 160, f.centroid.y - 120) < 2;
 
   projtrack::Tracker tracker;
-  projtrack::TrackerParams tp;
+  projtrack::TrackerParams defaults;
+  defaults.push.threshold = 0.2;  // what an application tunes; TrackerParams copies as a value
+  projtrack::TrackerParams tp = defaults;
   tracker.seed({160, 120});
   for (int i = 0; i < 10; ++i) {
     const int cx = 160 + 3 * i;

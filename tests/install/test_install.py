@@ -49,7 +49,12 @@ installed = set(os.listdir(os.path.join(root, includedir, 'projtrack')))
 check(installed == closure, f'installed headers are the include closure of projtrack.hpp '
       f'({len(installed)} of {len([f for f in os.listdir(src) if f.endswith((".hpp", ".def"))])}; '
       f'extra {sorted(installed - closure)}, missing {sorted(closure - installed)})')
-for internal in ['scratch_mask.hpp', 'vector_clones.hpp', 'grid_filling.hpp']:
+# The estimators' internals and the Tracker's stages: a Tracker holds them behind a pointer, and
+# TrackerParams holds the appearance model's tuning as plain structs of their own headers.
+for internal in ['scratch_mask.hpp', 'vector_clones.hpp', 'grid_filling.hpp', 'object_finder.hpp',
+                 'object_model.hpp', 'appearance_model.hpp', 'silhouette.hpp',
+                 'silhouette_pieces.hpp', 'region_labels.hpp', 'work_frame.hpp', 'mask.hpp',
+                 'edge_source.hpp', 'motion_acquisition.hpp', 'pointer.hpp']:
     check(internal not in installed, f'{internal} is not installed')
 
 # projtrack.pc moved with the staging folder: its prefix line points there (pkg-config's
@@ -72,6 +77,14 @@ check(own == ['-I' + os.path.join(root, includedir)],
       f'one include folder of ours, used as <projtrack/...>: {own}')
 check(re.search(r'^Requires\.private:.*opencv4', pc, re.M) is not None
       and re.search(r'^Requires:.*opencv', pc, re.M) is None, 'OpenCV is Requires.private')
+
+# Each installed header compiles alone, from the installed copy (it includes what it uses).
+for h in sorted(installed):
+    if h.endswith('.hpp'):
+        r = subprocess.run(cxx + ['-std=c++17', '-fsyntax-only', '-x', 'c++', '-'] + cflags,
+                           input=f'#include <projtrack/{h}>\n', capture_output=True, text=True)
+        check(r.returncode == 0, f'<projtrack/{h}> compiles alone' + (': ' + r.stderr[:400]
+                                                                      if r.returncode else ''))
 
 consumer = os.path.join(source, 'tests', 'install', 'consumer.cpp')
 builds = []
