@@ -254,7 +254,9 @@ bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion
   const Point2i shift = round_to_pixel({motion.x / scale_, motion.y / scale_});
   prior_.translate(shift.x, shift.y);
   const int reach = at_least(p.reach, m.area, 2), window = at_least(p.window, m.area, 2);
-  int margin = margin_for(m, reach, p) + window;
+  // The silhouette lies within reach of the prior, which the mean shift moves by up to a window:
+  // the edges must be right there, a guard band beyond (the blur's and Canny's neighbourhoods).
+  int margin = reach + window + edges.border_guard();
   const Rect frame_work = {0, 0, (frame.luma.width + scale_ - 1) / scale_,
                            (frame.luma.height + scale_ - 1) / scale_};
   const bool learning = unlearned_ + 1 >= p.learn_every;
