@@ -28,9 +28,10 @@ enum class TraceKind {
   GridLines,      // runs along the grid lines that were reached
 };
 
-// The parameters (params.hpp) a method reads besides `rays`, which every method reads (its
-// inner-point update casts them), and max_iterations and convergence, which every iterative
-// method reads: a set of these bits (the table's `reads` column).
+// The parameters (params.hpp) a method reads besides `rays` and `seed_radius`, which every method
+// reads (the inner-point update casts the rays; the seed is looked for within the radius), and
+// max_iterations and convergence, which every iterative method reads: a set of these bits (the
+// table's `reads` column).
 enum ReadsParam : unsigned {
   kReadsNoOther = 0,
   kReadsRecursion = 1u << 0,  // recursion: y, the levels of re-casting from hit points
