@@ -218,6 +218,13 @@ int sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progres
     if (m.family == Family::Rays) rays_methods.push_back(m.method);
     if (m.iterative) iterative.push_back(m.method);
   }
+  // The methods that read a parameter (the table's `reads` column).
+  const auto reading = [](unsigned bit) {
+    std::vector<Method> ms;
+    for (const MethodInfo& m : kMethods)
+      if (m.reads & bit) ms.push_back(m.method);
+    return ms;
+  };
   std::vector<Axis> axes = {
       // One grid size serves both grid fills: tuned on the element's default method, ours.
       {"grid_size",
@@ -226,16 +233,16 @@ int sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progres
        [](Params& p, double v) { p.grid_size = int(v); }},
       {"max_gap",
        kMaxGapValues,
-       {Method::GapTolerantFilling},
+       reading(kReadsMaxGap),
        [](Params& p, double v) { p.max_gap = int(v); }},
       {"block_size",
        {4, 6, 8, 12, 16},
-       {Method::RasterizedRayCasting},
+       reading(kReadsBlockSize),
        [](Params& p, double v) { p.block_size = int(v); }},
       {"rays", {8, 16, 32, 64}, rays_methods, [](Params& p, double v) { p.rays = int(v); }},
       {"recursion",
        {2, 3},
-       {Method::RecursiveRayCasting, Method::RasterizedRayCasting},
+       reading(kReadsRecursion),
        [](Params& p, double v) {
          p.recursion = int(v);
          p.rays = std::min(p.rays, 16);

@@ -28,7 +28,7 @@ Features OpenCvComponents::estimate(const cv::Mat& edges, Point2i seed) {
   cv::connectedComponentsWithStats(free_, labels_, stats_, centroids_, 4, CV_32S);
   const int label = labels_.at<int>(seed.y, seed.x);
   if (label == 0) {
-    f.status = Status::InnerPointOnEdge;
+    f.status = EstimateStatus::InnerPointOnEdge;
     return f;
   }
   f.area = stats_.at<int>(label, cv::CC_STAT_AREA);

@@ -26,6 +26,7 @@
 #include "alloc_count.hpp"
 #include "box_blur.hpp"
 #include "canny.hpp"
+#include "edge_region.hpp"
 #include "machine.hpp"
 #include "method_list.hpp"
 #include "peers.hpp"
@@ -338,22 +339,6 @@ void cost_by_object_size(const std::vector<double>& object_px, int rounds) {
   }
 }
 
-// The least margin around the object's box that TrackerParams::edge_margin documents.
-constexpr int kLeastMargin = 16;
-
-// The region the tracker computes edges in around an object at rest, as TrackerParams documents
-// it: the object's box grown by edge_margin of its larger side (at least kLeastMargin px), and
-// for gap-tolerant filling by max_gap + 2 px more (the band it reads beside its lines).
-Rect tracker_region(const Rect& box, int width, int height, Method m) {
-  const double grown_by = TrackerParams{}.edge_margin * std::max(box.width, box.height);
-  int margin = std::max(kLeastMargin, static_cast<int>(grown_by));
-  if (m == Method::GapTolerantFilling) margin += Params{}.max_gap + 2;
-  const int x0 = std::max(0, box.x - margin), y0 = std::max(0, box.y - margin);
-  const int x1 = std::min(width, box.x + box.width + margin);
-  const int y1 = std::min(height, box.y + box.height + margin);
-  return {x0, y0, x1 - x0, y1 - y0};
-}
-
 // Our box blur and Canny against cv::blur and cv::Canny, side by side on the same crops of the
 // same frames: the regions the tracker asks for around objects of each size (and whole frames,
 // what searching costs). Canny runs on the blurred crop, with the element's thresholds.
@@ -368,7 +353,9 @@ void edge_stages(const std::vector<double>& object_px, int rounds, int batch) {
   std::vector<Case> cases;
   for (double px : object_px) {
     auto clip = generated_clip(640, 480, px / (640.0 * 480), 8, 0);
-    const Rect region = tracker_region(clip->first_box, clip->width, clip->height, method);
+    // The region the edges model computes edges in around the object at rest.
+    const Rect region = edge_region(clip->first_box, {0, 0}, method, Params{}, TrackerParams{},
+                                    clip->width, clip->height);
     cases.push_back({std::move(clip), region, px});
   }
   for (auto [w, h] : {std::pair{640, 480}, std::pair{1920, 1080}})
@@ -484,9 +471,9 @@ GstBusSyncReply count_message(GstBus*, GstMessage* m, gpointer data) {
     return GST_BUS_PASS;
   static const std::unordered_set<std::string> tracking = [] {
     std::unordered_set<std::string> names;
-    for (int s = 0; s <= static_cast<int>(Status::InvalidParameters); ++s)
-      if (has_features(static_cast<Status>(s)))
-        names.insert(std::string(status_name(static_cast<Status>(s))));
+    for (int s = 0; s <= static_cast<int>(TrackStatus::InvalidParameters); ++s)
+      if (has_features(static_cast<TrackStatus>(s)))
+        names.insert(std::string(status_name(static_cast<TrackStatus>(s))));
     return names;
   }();
   auto* counts = static_cast<std::atomic<long>*>(data);  // messages, tracked
@@ -602,9 +589,9 @@ void real_clip_statuses(const Clip& clip) {
           t.track(ImageView(g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step)),
                   EdgeParams{}, static_cast<double>(i) / 30, method, Params{}, tp);
       acquisitions += r.acquired;
-      if (r.status == Status::Lost) {
+      if (r.status == TrackStatus::Lost) {
         ++(r.detail.find("leak") != std::string::npos ? leaks : lost);
-      } else if (r.status == Status::Searching) {
+      } else if (r.status == TrackStatus::Searching) {
         ++searching;
       } else if (has_features(r.status)) {
         ++tracked;
@@ -626,8 +613,8 @@ void write_meta(const std::string& dir, const std::string& measured) {
        << CV_VERSION << "\",\n  \"gstreamer\": \"" << gst_version_string()
        << "\",\n  \"opencv_threads\": " << cv::getNumThreads()
        << ",\n  \"edge_margin\": " << TrackerParams{}.edge_margin
-       << ",\n  \"least_margin_px\": " << kLeastMargin << ",\n  \"canny\": [" << EdgeParams{}.low
-       << ", " << EdgeParams{}.high << "]\n}\n";
+       << ",\n  \"least_margin_px\": " << kLeastEdgeMargin << ",\n  \"canny\": ["
+       << EdgeParams{}.low << ", " << EdgeParams{}.high << "]\n}\n";
 }
 
 }  // namespace

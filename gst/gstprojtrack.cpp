@@ -84,8 +84,8 @@ using projtrack::EdgeDetector;
 using projtrack::Features;
 using projtrack::Method;
 using projtrack::ObjectModelKind;
-using projtrack::Status;
 using projtrack::TrackResult;
+using projtrack::TrackStatus;
 
 namespace {
 
@@ -126,9 +126,10 @@ struct Stream {
   int width = 0, height = 0;
   int black_level = 0;  // of edge-detector=input: 16 in limited-range YUV
   guint64 frames = 0;   // for buffers without timestamps
-  Status last_status = Status::NoInnerPoint;
-  std::optional<Status> last_posted;  // the status of the last message posted (updates=on-change)
-  std::string last_warning;           // the conflict last reported by an element warning
+  TrackStatus last_status = TrackStatus::NoInnerPoint;
+  // The status of the last message posted (updates=on-change).
+  std::optional<TrackStatus> last_posted;
+  std::string last_warning;  // the conflict last reported by an element warning
 };
 
 }  // namespace
@@ -627,8 +628,7 @@ static void attach_meta(GstBuffer* buffer, const TrackResult& r, Method method) 
 }
 
 static GstMessage* result_message(GstProjtrack* self, GstBuffer* buffer, const TrackResult& r,
-                                  Method method, const std::optional<projtrack::Point2i>& inner,
-                                  guint64 processing_ns) {
+                                  Method method, guint64 processing_ns) {
   const GstSegment* segment = &GST_BASE_TRANSFORM(self)->segment;
   const GstClockTime pts = GST_BUFFER_PTS(buffer);
   const GstClockTime stream_time = gst_segment_to_stream_time(segment, GST_FORMAT_TIME, pts);
@@ -640,7 +640,7 @@ static GstMessage* result_message(GstProjtrack* self, GstBuffer* buffer, const T
                       f.bbox.width, "height", G_TYPE_INT, f.bbox.height, "rays-cast", G_TYPE_UINT64,
                       static_cast<guint64>(f.rays_cast), "pixels-visited", G_TYPE_UINT64,
                       static_cast<guint64>(f.pixels_visited), nullptr);
-  } else if (inner) {
+  } else if (const std::optional<projtrack::Point2i>& inner = r.inner_point) {
     gst_structure_set(s, "inner-point-x", G_TYPE_INT, inner->x, "inner-point-y", G_TYPE_INT,
                       inner->y, nullptr);
   }
@@ -686,7 +686,7 @@ static TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Setti
 
 // Whether this frame posts a message: every frame; on a change (another status, an acquisition,
 // a push); or never.
-static bool worth_posting(Updates updates, const TrackResult& r, std::optional<Status>& last) {
+static bool worth_posting(Updates updates, const TrackResult& r, std::optional<TrackStatus>& last) {
   const bool changed = last != r.status || r.acquired || r.push;
   last = r.status;
   return updates == Updates::EveryFrame || (updates == Updates::OnChange && changed);
@@ -707,8 +707,9 @@ static TrackResult unread_frame(GstProjtrack* self, const projtrack::gst::FrameM
                         ("such buffers pass through untouched, with status=invalid-image"));
   }
   TrackResult r;
-  r.status = Status::InvalidImage;
+  r.status = TrackStatus::InvalidImage;
   r.detail = mapping.detail;
+  r.inner_point = self->stream->tracker.inner_point();  // the track waits where it was
   return r;
 }
 
@@ -752,7 +753,7 @@ static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuff
     st.last_status = r.status;
   }
   // Settings that conflict are said at once, whatever `updates` is, and again when they change.
-  if (r.status != Status::InvalidParameters) {
+  if (r.status != TrackStatus::InvalidParameters) {
     st.last_warning.clear();
   } else if (detail != st.last_warning) {
     st.last_warning = detail;
@@ -760,7 +761,7 @@ static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuff
                         ("nothing is tracked until they are fixed"));
   }
   if (r.push) GST_INFO_OBJECT(self, "gesture: push");
-  const std::optional<projtrack::Point2i>& inner = st.tracker.inner_point();
+  const std::optional<projtrack::Point2i>& inner = r.inner_point;
   GST_OBJECT_LOCK(self);
   self->tracked_x = inner ? inner->x : -1;
   self->tracked_y = inner ? inner->y : -1;
@@ -770,8 +771,7 @@ static GstFlowReturn gst_projtrack_transform_ip(GstBaseTransform* trans, GstBuff
     const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
                         std::chrono::steady_clock::now() - start)
                         .count();
-    GstMessage* msg = result_message(self, buffer, r, s.method, st.tracker.inner_point(),
-                                     static_cast<guint64>(ns));
+    GstMessage* msg = result_message(self, buffer, r, s.method, static_cast<guint64>(ns));
     if (!mapping.ok())
       gst_structure_set(gst_message_writable_structure(msg), "reason", G_TYPE_STRING,
                         mapping.reason, nullptr);
@@ -797,6 +797,28 @@ static void gst_projtrack_init(GstProjtrack* self) {
   gst_base_transform_set_passthrough(GST_BASE_TRANSFORM(self), FALSE);
 }
 
+// A property's blurb: `what` it does, after the methods it tunes (those of the table of methods
+// for which `tunes` holds), as "grid-filling and gap-tolerant-filling: what". The list comes from
+// the table's traits, so that a new method keeps the blurbs true. Interned: the blurb lives as long
+// as the process, as G_PARAM_STATIC_STRINGS wants.
+template <class Tunes>
+static const char* blurb_of_methods(Tunes tunes, const char* what) {
+  std::vector<const char*> nicks;
+  for (const projtrack::MethodInfo& m : projtrack::kMethods)
+    if (tunes(m)) nicks.push_back(m.nick);
+  std::string blurb;
+  for (std::size_t i = 0; i < nicks.size(); ++i)
+    blurb += std::string(i == 0 ? "" : i + 1 == nicks.size() ? " and " : ", ") + nicks[i];
+  return g_intern_string((blurb + ": " + what).c_str());
+}
+
+// The methods that read the parameter of `bit` (the table's `reads` column).
+static auto reading(projtrack::ReadsParam bit) {
+  return [bit](const projtrack::MethodInfo& m) { return (m.reads & bit) != 0; };
+}
+
+static bool iterates(const projtrack::MethodInfo& m) { return m.iterative; }
+
 static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   auto* gobject_class = G_OBJECT_CLASS(klass);
   auto* element_class = GST_ELEMENT_CLASS(klass);
@@ -818,9 +840,11 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   // method keeps the inner point centred with `rays` rays).
   properties[PROP_METHOD] = g_param_spec_enum(
       "method", "Method",
-      "How the object's centroid and area are measured inside its outline: rays cast from the "
-      "inner point, or a fill (gap-tolerant-filling, the default, does not leak through small "
-      "breaks in the outline)",
+      g_intern_string((std::string("How the object's centroid and area are measured inside its "
+                                   "outline: rays cast from the inner point, or a fill (") +
+                       projtrack::method_info(kDefaultMethod).nick +
+                       ", the default, does not leak through small breaks in the outline)")
+                          .c_str()),
       GST_TYPE_PROJTRACK_METHOD, static_cast<gint>(kDefaultMethod), flags);
   properties[PROP_RAYS] = g_param_spec_uint(
       "rays", "Rays",
@@ -829,32 +853,36 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
       projtrack::kMinRays, projtrack::kMaxRays, p.rays, flags);
   properties[PROP_RECURSION] = g_param_spec_uint(
       "recursion", "Recursion",
-      "recursive- and rasterized-ray-casting: how many times rays are cast again from where they "
-      "hit (rays to the power recursion must stay at most 1048576)",
+      blurb_of_methods(reading(projtrack::kReadsRecursion),
+                       "how many times rays are cast again from where they hit (rays to the power "
+                       "recursion must stay at most 1048576)"),
       projtrack::kMinRecursion, projtrack::kMaxRecursion, p.recursion, flags);
   properties[PROP_BLOCK_SIZE] = g_param_spec_uint(
       "block-size", "Block size",
-      "rasterized-ray-casting: side, in pixels, of the squares that the rays mark as the object", 1,
-      projtrack::kMaxCellSize, p.block_size, flags);
+      blurb_of_methods(reading(projtrack::kReadsBlockSize),
+                       "side, in pixels, of the squares that the rays mark as the object"),
+      1, projtrack::kMaxCellSize, p.block_size, flags);
   properties[PROP_GRID_SIZE] = g_param_spec_uint(
       "grid-size", "Grid size",
-      "grid-filling and gap-tolerant-filling: spacing, in pixels, of the grid lines the fill "
-      "follows (smaller: more exact, slower)",
+      blurb_of_methods(reading(projtrack::kReadsGridSize),
+                       "spacing, in pixels, of the grid lines the fill follows (smaller: more "
+                       "exact, slower)"),
       1, projtrack::kMaxCellSize, p.grid_size, flags);
   properties[PROP_MAX_GAP] = g_param_spec_uint(
       "max-gap", "Max gap",
-      "gap-tolerant-filling: the longest break in the object's outline, in pixels, that the fill "
-      "will not leak through",
+      blurb_of_methods(reading(projtrack::kReadsMaxGap),
+                       "the longest break in the object's outline, in pixels, that the fill will "
+                       "not leak through"),
       1, projtrack::kMaxGap, p.max_gap, flags);
   properties[PROP_MAX_ITERATIONS] = g_param_spec_uint(
       "max-iterations", "Max iterations",
-      "iterative-, recursive- and rasterized-ray-casting: at most this many cast-and-move rounds "
-      "per frame",
-      1, projtrack::kMaxIterations, p.max_iterations, flags);
+      blurb_of_methods(iterates, "at most this many cast-and-move rounds per frame"), 1,
+      projtrack::kMaxIterations, p.max_iterations, flags);
   properties[PROP_CONVERGENCE] = g_param_spec_double(
       "convergence", "Convergence",
-      "iterative-, recursive- and rasterized-ray-casting: stop the rounds when the inner point "
-      "and the centroid move less than this many pixels",
+      blurb_of_methods(iterates,
+                       "stop the rounds when the inner point and the centroid move less than this "
+                       "many pixels"),
       0.0, projtrack::kMaxConvergence, p.convergence, flags);
   properties[PROP_EDGE_DETECTOR] = g_param_spec_enum(
       "edge-detector", "Edge detector",

@@ -146,17 +146,17 @@ class Painter {
   bool converted_ = false;
 };
 
-Rgb status_colour(Status s) {
+Rgb status_colour(TrackStatus s) {
   switch (s) {
-    case Status::Ok:
-    case Status::ReachedBorder:
-    case Status::CoversFrame:
+    case TrackStatus::Ok:
+    case TrackStatus::ReachedBorder:
+    case TrackStatus::CoversFrame:
       return kTracking;
-    case Status::Lost:
+    case TrackStatus::Lost:
       return kLost;
-    case Status::Searching:
+    case TrackStatus::Searching:
       return kSearching;
-    case Status::NoInnerPoint:
+    case TrackStatus::NoInnerPoint:
       return kWaiting;
     default:
       return kProblem;
@@ -165,19 +165,19 @@ Rgb status_colour(Status s) {
 
 std::string headline(const TrackResult& r) {
   switch (r.status) {
-    case Status::Ok:
+    case TrackStatus::Ok:
       return "TRACKING";
-    case Status::ReachedBorder:
+    case TrackStatus::ReachedBorder:
       return "TRACKING (at the frame border)";
-    case Status::CoversFrame:
+    case TrackStatus::CoversFrame:
       return "TRACKING (covers the frame)";
-    case Status::Lost:
+    case TrackStatus::Lost:
       return "LOST";
-    case Status::Searching:
+    case TrackStatus::Searching:
       return "SEARCHING";
-    case Status::NoInnerPoint:
+    case TrackStatus::NoInnerPoint:
       return "WAITING";
-    case Status::InvalidParameters:
+    case TrackStatus::InvalidParameters:
       return "INVALID SETTINGS";
     default: {
       std::string name(status_name(r.status));
@@ -213,7 +213,7 @@ std::vector<std::string> overlay_text(const TrackResult& r, Method method) {
   if (r.has_pose)
     lines.push_back(format("x %+.2f  y %+.2f  depth %.2f", r.pose.x, r.pose.y, r.pose.depth));
   if (r.features.valid()) {
-    const char* what = r.status == Status::Lost ? "last seen at" : "centroid";
+    const char* what = r.status == TrackStatus::Lost ? "last seen at" : "centroid";
     lines.push_back(std::string(what) + format(" %.0f, %.0f  area %.0f px", r.features.centroid.x,
                                                r.features.centroid.y, r.features.area));
   }
@@ -257,8 +257,7 @@ void draw_overlay(GstVideoFrame* frame, Method method, const TrackResult& result
     paint.outline(features.bbox, tracking ? kBox : kHeldBox);
     if (tracking) paint.cross(features.centroid, 3 * scale + 3, kCentroid);
   }
-  if (features.status != Status::NoInnerPoint && tracking)
-    paint.square(features.inner_point, scale, kInnerPoint);
+  if (tracking) paint.square(features.inner_point, scale, kInnerPoint);
 
   // The text panel, wrapped to the frame's width.
   const int advance = (kGlyphWidth + 1) * scale, line_height = (kGlyphHeight + 1) * scale;

@@ -23,16 +23,22 @@ class Estimator {
 
   // Estimates the projection features of the object around `inner_point` from `edges` (non-zero
   // = edge), then updates the inner point for the next frame. Never throws on bad input: the
-  // status says what was wrong (see status.hpp). Fills `trace` when one is given.
+  // status says what was wrong (see status.hpp). Fills `trace` when one is given. `options`: what
+  // the caller (a tracker) sets for this call alone.
   Features estimate(const ImageView& edges, Point2i inner_point, const Params& params,
-                    Trace* trace = nullptr);
+                    Trace* trace = nullptr) {
+    return estimate(edges, inner_point, params, EstimateOptions{}, trace);
+  }
+  Features estimate(const ImageView& edges, Point2i inner_point, const Params& params,
+                    const EstimateOptions& options, Trace* trace = nullptr);
 
  protected:
   struct Context {
-    const ImageView& edges;  // valid, non-empty
-    const Params& params;    // validated
-    const RayFan& fan;       // params.rays directions
-    Trace* trace;            // may be null
+    const ImageView& edges;          // valid, non-empty
+    const Params& params;            // validated
+    const EstimateOptions& options;  // validated
+    const RayFan& fan;               // params.rays directions
+    Trace* trace;                    // may be null
   };
   // The method proper, called with `out.seed` a free pixel and `out.inner_point` == `out.seed`.
   // Sets centroid, area, bbox and iterations, and leaves `out.inner_point` where the method's own
@@ -78,7 +84,7 @@ std::unique_ptr<Estimator> make_estimator(Method m);
 
 // The status of an estimate covering `bbox` in a width × height frame: Ok, ReachedBorder (it
 // touches the border) or CoversFrame (it touches all four).
-Status border_status(const Rect& bbox, int width, int height);
+EstimateStatus border_status(const Rect& bbox, int width, int height);
 // Moves an estimate made in a region of the frame into frame coordinates.
 void translate(Features& f, int dx, int dy);
 

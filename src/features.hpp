@@ -10,7 +10,7 @@
 namespace projtrack {
 
 struct Features {
-  Status status = Status::EmptyImage;
+  EstimateStatus status = EstimateStatus::EmptyImage;
   std::string detail;  // a human-readable reason when status has no features (else empty)
 
   // Valid when has_features(status):

@@ -17,12 +17,13 @@ PROJTRACK_VECTOR_CLONES void mark_near(const std::uint8_t* __restrict__ row,
 
 }  // namespace
 
-GridFilling::Span GapTolerantFilling::extend(const ImageView& edges, bool vertical, int at,
-                                             int start, const Params& params, Work& work) {
-  const int gap = params.max_gap;
+GridFilling::Span GapTolerantFilling::extend(const Context& ctx, bool vertical, int at, int start,
+                                             Work& work) {
+  const ImageView& edges = ctx.edges;
+  const int gap = ctx.options.closed_outline ? 1 : ctx.params.max_gap;
   const int across = vertical ? edges.width : edges.height;
   // 1. The plain grid run: up to an edge, the border or pixels this line already reached.
-  const Span plain = GridFilling::extend(edges, vertical, at, start, params, work);
+  const Span plain = GridFilling::extend(ctx, vertical, at, start, work);
   const int a = plain.first, b = plain.last;
   ++work.pixels;
 

@@ -23,9 +23,9 @@ namespace projtrack {
 // absent over long stretches (real footage against a similar background), spurious strokes.
 class GapTolerantFilling final : public GridFilling {
  protected:
-  // The plain grid run, cut before the first pixel where the line passes through a gap.
-  Span extend(const ImageView& edges, bool vertical, int at, int start, const Params& params,
-              Work& work) override;
+  // The plain grid run, cut before the first pixel where the line passes through a gap of up to
+  // max_gap px (1 px when the options say the edges are a closed outline).
+  Span extend(const Context& ctx, bool vertical, int at, int start, Work& work) override;
 
  private:
   // Per position of the line being walked: the nearest edge on each side, and whether it ends a

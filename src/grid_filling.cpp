@@ -13,8 +13,9 @@ int first_on_grid(int from, int anchor, int m) {
 }
 }  // namespace
 
-GridFilling::Span GridFilling::extend(const ImageView& edges, bool vertical, int at, int start,
-                                      const Params&, Work& work) {
+GridFilling::Span GridFilling::extend(const Context& ctx, bool vertical, int at, int start,
+                                      Work& work) {
+  const ImageView& edges = ctx.edges;
   int a = start, b = start;
   if (!vertical) {
     const std::uint8_t* e = edges.row(at);
@@ -44,7 +45,7 @@ void GridFilling::run(const Context& ctx, Features& out, Work& work) {
   BoundsAccumulator bounds;
   // Grid cells larger than the object make the scaling meaningless; the frame bounds it.
   const double cell = static_cast<double>(m) * m / (2.0 * m - 1.0);
-  const double limit = ctx.params.area_limit > 0 ? ctx.params.area_limit : HUGE_VAL;
+  const double limit = ctx.options.area_limit > 0 ? ctx.options.area_limit : HUGE_VAL;
 
   while (!pending_.empty() && static_cast<double>(count) * cell <= limit) {
     const Pending item = pending_.back();
@@ -54,7 +55,7 @@ void GridFilling::run(const Context& ctx, Features& out, Work& work) {
     const std::uint8_t bit = item.vertical ? kAlongColumn : kAlongRow;
     if (edges.row(y)[x] || (reached_.row(y)[x] & bit)) continue;
     const int at = item.vertical ? x : y;
-    const Span s = extend(edges, item.vertical, at, item.vertical ? y : x, ctx.params, work);
+    const Span s = extend(ctx, item.vertical, at, item.vertical ? y : x, work);
     for (int i = s.first; i <= s.last; ++i) {
       const int px = item.vertical ? x : i, py = item.vertical ? i : y;
       std::uint8_t& cell_bits = reached_.row(py)[px];

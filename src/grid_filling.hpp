@@ -25,8 +25,7 @@ class GridFilling : public Estimator {
   // How far the line through the free pixel `start` runs: the row `at` (vertical = false) or the
   // column `at`. Here up to an edge, the border or pixels this line already reached; a variant
   // of the fill changes only this.
-  virtual Span extend(const ImageView& edges, bool vertical, int at, int start,
-                      const Params& params, Work& work);
+  virtual Span extend(const Context& ctx, bool vertical, int at, int start, Work& work);
 
   static constexpr std::uint8_t kAlongRow = 1, kAlongColumn = 2;  // bits of reached_
   ScratchMask reached_;  // bit 1: reached along its row, bit 2: along its column

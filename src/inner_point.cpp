@@ -15,10 +15,10 @@ std::optional<Point2i> nearest_free_pixel(const ImageView& edges, Point2i p, int
     return std::nullopt;
   std::optional<Point2i> best;
   long long best_d2 = static_cast<long long>(radius) * radius + 1;
-  const int y0 = std::max(0, p.y - radius), y1 = std::min(edges.height - 1, p.y + radius);
-  const int x0 = std::max(0, p.x - radius), x1 = std::min(edges.width - 1, p.x + radius);
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
+  const Rect square = clip_to_frame({p.x - radius, p.y - radius, 2 * radius + 1, 2 * radius + 1},
+                                    edges.width, edges.height);
+  for (int y = square.y; y < square.bottom(); ++y) {
+    for (int x = square.x; x < square.right(); ++x) {
       const long long dx = x - p.x, dy = y - p.y, d2 = dx * dx + dy * dy;
       if (d2 < best_d2 && edges.at(x, y) == 0) {
         best_d2 = d2;

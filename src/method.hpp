@@ -28,6 +28,21 @@ enum class TraceKind {
   GridLines,      // runs along the grid lines that were reached
 };
 
+// The parameters (params.hpp) a method reads besides `rays` and `seed_radius`, which every method
+// reads (the inner-point update casts the rays; the seed is looked for within the radius), and
+// max_iterations and convergence, which every iterative method reads: a set of these bits (the
+// table's `reads` column).
+enum ReadsParam : unsigned {
+  kReadsNoOther = 0,
+  kReadsRecursion = 1u << 0,  // recursion: y, the levels of re-casting from hit points
+  kReadsBlockSize = 1u << 1,  // block_size: m of m-rasterization
+  kReadsGridSize = 1u << 2,   // grid_size: m of m-grid-filling
+  // max_gap: the longest contour gap a fill will not cross. Such a method reads the edges up to
+  // max_gap + 2 px beside what it fills, beyond the box it reports: the edges model widens the
+  // region it computes edges in by as much (edge_region.hpp).
+  kReadsMaxGap = 1u << 3,
+};
+
 // The factory of one method, defined in its estimator's file.
 template <Method>
 std::unique_ptr<Estimator> make_estimator();
@@ -48,15 +63,16 @@ struct MethodInfo {
   bool iterative;   // max_iterations and convergence apply
   bool from_paper;  // one of the paper's six (else ours, beyond the paper)
   TraceKind trace;
+  unsigned reads;  // ReadsParam bits: the parameters it reads besides rays (and the iterative ones)
   std::unique_ptr<Estimator> (*make)();
 };
 
 // Every method, in the order of its Method value: kMethods[static_cast<int>(m)].method == m.
 inline constexpr MethodInfo kMethods[] = {
 // clang-format off
-#define PROJTRACK_METHOD(id, nick, family, iterative, from_paper, trace, description)     \
-  {Method::id, nick, description, Family::family, iterative, from_paper, TraceKind::trace, \
-   &make_estimator<Method::id>},
+#define PROJTRACK_METHOD(id, nick, family, iterative, from_paper, trace, reads, description) \
+  {Method::id, nick, description, Family::family, iterative, from_paper, TraceKind::trace,     \
+   reads, &make_estimator<Method::id>},
 // clang-format on
 #include "method_table.def"
 #undef PROJTRACK_METHOD

@@ -54,11 +54,11 @@ std::optional<Features> MotionAcquisition::acquire(const ImageView& gray, const 
   }
   std::optional<Features> best;
   double best_score = -1;
-  Params limited = params;
+  EstimateOptions limited;
   limited.area_limit = limit;
   for (const Point2i& c : candidates) {
     if (best && best->bbox.contains(c)) continue;  // already inside the best region found
-    Features f = est.estimate(edges, c, limited);
+    Features f = est.estimate(edges, c, params, limited);
     if (!implausible(f, edges.width, edges.height, tp).empty()) continue;
     // A sliver between two edges (seen on real footage: a 2×23 px strip) is not an object.
     if (std::min(f.bbox.width, f.bbox.height) < tp.min_acquired_side) continue;

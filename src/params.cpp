@@ -43,8 +43,12 @@ std::string validate(const Params& p) {
   if (p.seed_radius < 0 || p.seed_radius > kMaxSeedRadius)
     return out_of_range("seed_radius", p.seed_radius, 0, kMaxSeedRadius);
   if (p.max_gap < 1 || p.max_gap > kMaxGap) return out_of_range("max_gap", p.max_gap, 1, kMaxGap);
-  if (!std::isfinite(p.area_limit) || p.area_limit < 0 || p.area_limit > kMaxAreaLimit)
-    return out_of_range("area_limit", p.area_limit, 0, kMaxAreaLimit);
+  return {};
+}
+
+std::string validate(const EstimateOptions& o) {
+  if (!std::isfinite(o.area_limit) || o.area_limit < 0 || o.area_limit > kMaxAreaLimit)
+    return out_of_range("area_limit", o.area_limit, 0, kMaxAreaLimit);
   return {};
 }
 

@@ -1,4 +1,5 @@
-// The estimators' parameters, their defaults and their valid ranges.
+// The estimators' parameters and a caller's options for one estimate, their defaults and their
+// valid ranges.
 #pragma once
 
 #include <string>
@@ -18,11 +19,22 @@ struct Params {
   double convergence = 4.0;  // stop iterating when inner point and centroid move less, px [0, 1e6]
   int seed_radius = 4;       // how far to look for a free pixel around the inner point, px [0, 64]
   int max_gap = 12;  // gap-tolerant filling: longest contour gap it will not cross, px [1, 15]
+};
+
+// What the caller of one estimate (a tracker) sets for that call alone, beside the estimator's
+// parameters (Params: the user's settings): how far a fill may go, and what kind of edge map it
+// is given. Estimator::estimate takes them as their own argument.
+struct EstimateOptions {
   // The fills (pixel-, grid- and gap-tolerant filling) stop once their area passes this, px² (0 =
   // never). A tracker sets it just above what it would refuse anyway, so a leak costs about the
   // object's size instead of the frame's. A stopped estimate has area > area_limit, and its
   // centroid and box cover only what was filled.                                     [0, 1e12]
   double area_limit = 0;
+  // The edge map is a closed outline (every pixel off the object is an edge: a silhouette's), so
+  // there is no leak to stop and no gap to tolerate: gap-tolerant filling then reads the
+  // narrowest band (as with max_gap 1), so that a narrow neck of the object is not taken for a
+  // break in its contour.
+  bool closed_outline = false;
 };
 
 inline constexpr int kMinRays = 3, kMaxRays = 1024;
@@ -36,8 +48,9 @@ inline constexpr int kMaxGap = 15;
 // n^y is capped so one cast stays bounded: 1024^1, 1024^2 = 1M ... are refused above this.
 inline constexpr long long kMaxRaysPerCast = 1 << 20;
 
-// Empty when every parameter is in range; otherwise says which one is not, and why.
+// Empty when every parameter (option) is in range; otherwise says which one is not, and why.
 std::string validate(const Params& p);
+std::string validate(const EstimateOptions& o);
 
 // The paper's values (its figures: 32 rays, 16^2 recursion, 8-rasterization, an 8-grid) with the
 // original system's iteration rule (< 2 px, at most 10 iterations): for reproducing the paper.

@@ -12,7 +12,7 @@ void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
   pending_.push_back(out.seed);
   std::uint64_t count = 0, sum_x = 0, sum_y = 0;
   BoundsAccumulator bounds;
-  const double limit = ctx.params.area_limit > 0 ? ctx.params.area_limit : HUGE_VAL;
+  const double limit = ctx.options.area_limit > 0 ? ctx.options.area_limit : HUGE_VAL;
 
   while (!pending_.empty() && static_cast<double>(count) <= limit) {
     const Point2i s = pending_.back();

@@ -19,7 +19,7 @@ std::string percent(double fraction) {
 std::string implausible(const Features& f, int width, int height, const TrackerParams& tp) {
   if (!f.valid()) return f.detail.empty() ? std::string(status_name(f.status)) : f.detail;
   const double frame = static_cast<double>(width) * height;
-  if (f.status == Status::CoversFrame)
+  if (f.status == EstimateStatus::CoversFrame)
     return "the estimate covers the frame (a leak, or no closed contour around the inner point)";
   if (f.area > tp.max_area * frame)
     return "the estimate covers " + percent(f.area / frame) + " of the frame (a leak)";
@@ -49,12 +49,10 @@ std::string refused(const Features& f, int width, int height, const TrackerParam
   return {};
 }
 
-double area_limit(int width, int height, const Params& params, const TrackerParams& tp,
-                  const Features* last) {
+double area_limit(int width, int height, const TrackerParams& tp, const Features* last) {
   double limit = std::max(tp.max_area, 0.0) * width * height;
   if (last && tp.leak_factor > 0) limit = std::min(limit, tp.leak_factor * last->area);
-  limit = std::isfinite(limit) ? std::min(std::floor(limit) + 1, kMaxAreaLimit) : kMaxAreaLimit;
-  return params.area_limit > 0 ? std::min(limit, params.area_limit) : limit;
+  return std::isfinite(limit) ? std::min(std::floor(limit) + 1, kMaxAreaLimit) : kMaxAreaLimit;
 }
 
 }  // namespace projtrack

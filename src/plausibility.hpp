@@ -17,9 +17,8 @@ std::string implausible(const Features& f, int width, int height, const TrackerP
 std::string refused(const Features& f, int width, int height, const TrackerParams& tp,
                     const Features* last, double limit);
 
-// The area above which an estimate would be refused anyway, px²: the fills can stop there, so a
-// leak costs about the object's size rather than the frame's.
-double area_limit(int width, int height, const Params& params, const TrackerParams& tp,
-                  const Features* last);
+// The area above which an estimate would be refused anyway, px²: the fills can stop there
+// (EstimateOptions::area_limit), so a leak costs about the object's size rather than the frame's.
+double area_limit(int width, int height, const TrackerParams& tp, const Features* last);
 
 }  // namespace projtrack

@@ -2,30 +2,64 @@
 
 namespace projtrack {
 
-std::string_view status_name(Status s) {
+TrackStatus reported_status(EstimateStatus s) {
   switch (s) {
-    case Status::Ok:
+    case EstimateStatus::Ok:
+      return TrackStatus::Ok;
+    case EstimateStatus::ReachedBorder:
+      return TrackStatus::ReachedBorder;
+    case EstimateStatus::CoversFrame:
+      return TrackStatus::CoversFrame;
+    case EstimateStatus::EmptyImage:
+      return TrackStatus::EmptyImage;
+    case EstimateStatus::InvalidImage:
+      return TrackStatus::InvalidImage;
+    case EstimateStatus::InvalidParameters:
+      return TrackStatus::InvalidParameters;
+    case EstimateStatus::InnerPointOutside:
+    case EstimateStatus::InnerPointOnEdge:
+      break;
+  }
+  return TrackStatus::Lost;
+}
+
+std::string_view status_name(TrackStatus s) {
+  switch (s) {
+    case TrackStatus::Ok:
       return "ok";
-    case Status::ReachedBorder:
+    case TrackStatus::ReachedBorder:
       return "reached-border";
-    case Status::CoversFrame:
+    case TrackStatus::CoversFrame:
       return "covers-frame";
-    case Status::Lost:
+    case TrackStatus::Lost:
       return "lost";
-    case Status::Searching:
+    case TrackStatus::Searching:
       return "searching";
-    case Status::NoInnerPoint:
+    case TrackStatus::NoInnerPoint:
       return "no-inner-point";
-    case Status::InnerPointOutside:
-      return "inner-point-outside";
-    case Status::InnerPointOnEdge:
-      return "inner-point-on-edge";
-    case Status::EmptyImage:
+    case TrackStatus::EmptyImage:
       return "empty-image";
-    case Status::InvalidImage:
+    case TrackStatus::InvalidImage:
       return "invalid-image";
-    case Status::InvalidParameters:
+    case TrackStatus::InvalidParameters:
       return "invalid-parameters";
+  }
+  return "unknown";
+}
+
+std::string_view status_name(EstimateStatus s) {
+  switch (s) {
+    case EstimateStatus::InnerPointOutside:
+      return "inner-point-outside";
+    case EstimateStatus::InnerPointOnEdge:
+      return "inner-point-on-edge";
+    case EstimateStatus::Ok:
+    case EstimateStatus::ReachedBorder:
+    case EstimateStatus::CoversFrame:
+    case EstimateStatus::EmptyImage:
+    case EstimateStatus::InvalidImage:
+    case EstimateStatus::InvalidParameters:
+      return status_name(reported_status(s));  // the tracker's status reporting it: its name
   }
   return "unknown";
 }

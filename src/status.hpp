@@ -1,20 +1,20 @@
-// What happened on one estimate: a result with features, or why there is none.
+// The two kinds of status: what one estimate came to (EstimateStatus, in Features), and where the
+// tracker stands after one frame (TrackStatus, in TrackResult). Data flows one way: an estimator
+// never says a track is lost; the tracker reports an estimate's outcome as its own status when it
+// takes the estimate as it is (reported_status), under the same name.
 #pragma once
 
 #include <string_view>
 
 namespace projtrack {
 
-enum class Status {
+// What happened on one estimate: features, or why there are none.
+enum class EstimateStatus {
   // With features:
   Ok,             // the estimate stayed inside the frame
   ReachedBorder,  // it touches the frame border: the object is cut by the frame, or it leaked
   CoversFrame,    // it touches all four borders: no closed contour around the inner point
-  // Without features of this frame (the tracker's verdicts):
-  Lost,       // the estimate was refused (leaked, collapsed, or none); the last good one is kept
-  Searching,  // automatic acquisition is looking for an object to track
   // Without features:
-  NoInnerPoint,       // nothing to track yet: no inner point was given
   InnerPointOutside,  // the inner point is farther outside the frame than the seed radius
   InnerPointOnEdge,   // the inner point and every pixel within the seed radius are edges
   EmptyImage,         // zero width or height, or no pixels
@@ -22,12 +22,44 @@ enum class Status {
   InvalidParameters,  // a parameter out of range (see validate())
 };
 
+// Where the tracker stands after one frame: tracking with this frame's features, its verdict on
+// the frame, or why it could not look at it.
+enum class TrackStatus {
+  // Tracking, with this frame's features (the accepted estimate's own status):
+  Ok,             // the object is inside the frame
+  ReachedBorder,  // it touches the frame border
+  CoversFrame,    // it touches all four borders
+  // The tracker's verdicts, without features of this frame:
+  Lost,          // this frame's estimate was refused (leaked, collapsed, or none); the last
+                 // accepted one is kept
+  Searching,     // automatic acquisition is looking for an object to track
+  NoInnerPoint,  // nothing to track: no inner point was given and acquisition is manual
+  // The frame or the settings could not be used (the estimate's status, or the tracker's own
+  // checks); the track waits:
+  EmptyImage,         // zero width or height, or no pixels
+  InvalidImage,       // stride smaller than the width, or the frame and its edges differ in size
+  InvalidParameters,  // a parameter out of range, or settings that conflict
+};
+
 // Short lower-case name, as in GStreamer messages and CSV files ("ok", "reached-border", ...). The
-// view is of a string literal, so data() is null-terminated (usable as a C string).
-std::string_view status_name(Status s);
-// Whether the result carries a centroid, an area and a bounding box.
-inline bool has_features(Status s) {
-  return s == Status::Ok || s == Status::ReachedBorder || s == Status::CoversFrame;
+// view is of a string literal, so data() is null-terminated (usable as a C string). An estimate's
+// outcome and the tracker's status that reports it (reported_status) have the same name.
+std::string_view status_name(EstimateStatus s);
+std::string_view status_name(TrackStatus s);
+
+// Whether the result carries a centroid, an area and a bounding box of this frame.
+inline bool has_features(EstimateStatus s) {
+  return s == EstimateStatus::Ok || s == EstimateStatus::ReachedBorder ||
+         s == EstimateStatus::CoversFrame;
 }
+inline bool has_features(TrackStatus s) {
+  return s == TrackStatus::Ok || s == TrackStatus::ReachedBorder || s == TrackStatus::CoversFrame;
+}
+
+// The tracker's status for an estimate it takes as it is: accepted (Ok, ReachedBorder,
+// CoversFrame) or failed for want of a usable frame or settings (EmptyImage, InvalidImage,
+// InvalidParameters). An estimate that found no free pixel at the inner point (InnerPointOutside,
+// InnerPointOnEdge) is refused by the tracker: Lost.
+TrackStatus reported_status(EstimateStatus s);
 
 }  // namespace projtrack

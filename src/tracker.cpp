@@ -40,6 +40,8 @@ struct Tracker::Impl {
   // What was Tracker's private part.
   TrackResult track(const ColorView& frame, EdgeSource& edges, double t, Method m,
                     const Params& params, const TrackerParams& tp, Trace* trace);
+  TrackResult track_frame(const ColorView& frame, EdgeSource& edges, double t, Method m,
+                          const Params& params, const TrackerParams& tp, Trace* trace);
   TrackResult track_edges(const ColorView& frame, EdgeSource& edges, double t, Method m,
                           const Params& params, const TrackerParams& tp, Trace* trace);
   TrackResult track_appearance(const ColorView& frame, EdgeSource& edges, double t, Method m,
@@ -191,7 +193,7 @@ void Tracker::Impl::accept(const Features& f, double t, int width, int height,
   refused_in_a_row_ = 0;
   recent_refusals_ <<= 1;
   pointer_.update(f, width, height, t, tp);
-  r.status = f.status;
+  r.status = reported_status(f.status);
   r.features = f;
   r.has_pose = true;
   r.pose = pointer_.pose();
@@ -224,7 +226,7 @@ FinderParams Tracker::Impl::finder_params(const TrackerParams& tp) const {
 void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult& r) {
   ++refused_in_a_row_;
   recent_refusals_ = (recent_refusals_ << 1) | 1u;
-  r.status = Status::Lost;
+  r.status = TrackStatus::Lost;
   r.detail = std::move(why);
   // Only an accepted estimate is ever reported: with none yet, no features at all.
   r.features = last_good_ ? *last_good_ : Features{};
@@ -273,12 +275,20 @@ TrackResult Tracker::Impl::track(const ImageView& gray, const ImageView& edges, 
 
 TrackResult Tracker::Impl::track(const ColorView& frame, EdgeSource& edges, double t, Method m,
                                  const Params& params, const TrackerParams& tp, Trace* trace) {
+  TrackResult r = track_frame(frame, edges, t, m, params, tp, trace);
+  r.inner_point = inner_;
+  return r;
+}
+
+TrackResult Tracker::Impl::track_frame(const ColorView& frame, EdgeSource& edges, double t,
+                                       Method m, const Params& params, const TrackerParams& tp,
+                                       Trace* trace) {
   if (trace) trace->clear();
   const ImageView& luma = edges.frame();
   if (!luma.valid() || !frame.luma.valid() || frame.luma.width != luma.width ||
       frame.luma.height != luma.height) {
     TrackResult r;
-    r.status = luma.empty() ? Status::EmptyImage : Status::InvalidImage;
+    r.status = luma.empty() ? TrackStatus::EmptyImage : TrackStatus::InvalidImage;
     r.detail = "no usable frame";
     return r;
   }
@@ -288,7 +298,7 @@ TrackResult Tracker::Impl::track(const ColorView& frame, EdgeSource& edges, doub
   if (bad.empty()) bad = validate(edges.params());
   if (!bad.empty()) {
     TrackResult r;
-    r.status = Status::InvalidParameters;
+    r.status = TrackStatus::InvalidParameters;
     r.detail = std::move(bad);
     return r;
   }
@@ -313,26 +323,29 @@ TrackResult Tracker::Impl::track_edges(const ColorView& frame, EdgeSource& edges
   TrackResult r;
   const int w = frame.luma.width, h = frame.luma.height;
   const Features* last = last_good_ ? &*last_good_ : nullptr;
-  const double limit = area_limit(w, h, params, tp, last);
+  const double limit = area_limit(w, h, tp, last);
   if (!inner_) {
     const ImageView all = edges.region({0, 0, w, h});
     std::optional<Features> f =
         acquisition_.acquire(frame.luma, all, estimator(m), params, limit, tp, r.detail);
     if (!f) {
-      r.status = tp.acquisition == Acquisition::Manual ? Status::NoInnerPoint : Status::Searching;
+      r.status = tp.acquisition == Acquisition::Manual ? TrackStatus::NoInnerPoint
+                                                       : TrackStatus::Searching;
       return r;
     }
     r.detail.clear();
     accept(*f, t, w, h, tp, false, r);
     return r;
   }
-  Params limited = params;
+  EstimateOptions limited;
   limited.area_limit = limit;
-  const Features f = estimate_in_region(
-      edges, estimator(m), m, *inner_, last ? &last->bbox : nullptr, velocity_, limited, tp, trace);
-  if (f.status == Status::InvalidParameters || f.status == Status::InvalidImage ||
-      f.status == Status::EmptyImage) {
-    r.status = f.status;  // not the object's doing: say what is wrong, keep the track
+  const Features f =
+      estimate_in_region(edges, estimator(m), m, *inner_, last ? &last->bbox : nullptr, velocity_,
+                         params, limited, tp, trace);
+  // Not the object's doing: say what is wrong, keep the track.
+  if (f.status == EstimateStatus::InvalidParameters || f.status == EstimateStatus::InvalidImage ||
+      f.status == EstimateStatus::EmptyImage) {
+    r.status = reported_status(f.status);
     r.features = f;
     return r;
   }
@@ -425,11 +438,10 @@ bool Tracker::Impl::find_object(const ColorView& frame, EdgeSource& edges, const
 
 Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, int width,
                                                int height, Trace* trace) {
-  // The silhouette's outline is closed: there is no leak to stop and no gap to tolerate (a
-  // narrow neck of the object is not a break in its contour).
-  Params closed = params;
-  closed.area_limit = 0;
-  closed.max_gap = 1;
+  // The silhouette's outline is closed: there is no leak to stop (no area limit) and no gap to
+  // tolerate (a narrow neck of the object is not a break in its contour).
+  EstimateOptions closed;
+  closed.closed_outline = true;
   // One estimate per piece, each at full resolution on its piece alone as an edge map (every
   // pixel out of it is an edge), with one pixel of margin so that fills stop at it and rays end
   // on it; the largest piece first, from the track's inner point when it is in it; the features
@@ -478,7 +490,7 @@ Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, i
     }
     Trace* t = k == 0 ? trace : (trace ? &piece_trace_ : nullptr);
     Features f = estimator(m).estimate(ImageView(barrier_.data(), r.width, r.height, r.width),
-                                       {start.x - r.x, start.y - r.y}, closed, t);
+                                       {start.x - r.x, start.y - r.y}, params, closed, t);
     translate(f, r.x, r.y);
     if (t) t->translate(r.x, r.y);
     if (t && t != trace) trace->append(*t);
@@ -509,7 +521,7 @@ Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, i
     return total;
   }
   if (n == 0) {
-    total.status = Status::EmptyImage;
+    total.status = EstimateStatus::EmptyImage;
     total.detail = "the silhouette is empty";
     return total;
   }
@@ -535,7 +547,7 @@ TrackResult Tracker::Impl::track_appearance(const ColorView& frame, EdgeSource& 
   const int w = frame.luma.width, h = frame.luma.height;
   if (!object_.tracking()) {
     if (!inner_ && tp.acquisition == Acquisition::Manual) {
-      r.status = Status::NoInnerPoint;
+      r.status = TrackStatus::NoInnerPoint;
       r.detail = "no inner point: set one, or click in the video";
       return r;
     }
@@ -556,7 +568,7 @@ TrackResult Tracker::Impl::track_appearance(const ColorView& frame, EdgeSource& 
       refuse(std::move(why), tp, r);
       return r;
     }
-    r.status = Status::Searching;
+    r.status = TrackStatus::Searching;
     r.detail = std::move(why);
     return r;
   }

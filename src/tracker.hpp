@@ -26,10 +26,15 @@
 
 namespace projtrack {
 
+// What the tracker made of one frame: everything its users (the element's meta, message and
+// overlay) report.
 struct TrackResult {
-  Status status = Status::NoInnerPoint;
-  Features features;      // this frame's estimate; when Lost, the last accepted one (if any)
-  std::string detail;     // why, when the status is Lost, Searching or without features
+  TrackStatus status = TrackStatus::NoInnerPoint;
+  Features features;   // this frame's estimate; when Lost, the last accepted one (if any)
+  std::string detail;  // why, when the status is Lost, Searching or without features
+  // Where the tracker's inner point is after this frame, for the next one (none: not tracking).
+  // While tracking, features.inner_point; while lost, where the track waits to go on.
+  std::optional<Point2i> inner_point;
   bool acquired = false;  // tracking (re)started on this frame
   bool has_pose = false;  // tracking or lost (held) with an acquired object
   Pose pose;              // smoothed (when TrackerParams::smoothing)
@@ -51,6 +56,7 @@ class Tracker {
   void seed_box(const Rect& box);
   // Forgets the object; Auto and Center acquisition start over.
   void reset();
+  // Where the inner point is now (also TrackResult::inner_point of the last frame).
   const std::optional<Point2i>& inner_point() const;
 
   // One frame taken at `t` seconds, with edges computed here with `edge_params`: only around the

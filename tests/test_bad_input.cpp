@@ -25,37 +25,37 @@ void expect_finite(const Features& f) {
 }
 
 TEST_P(EveryMethod, EmptyImages) {
-  EXPECT_EQ(run(ImageView(), {0, 0}).status, Status::EmptyImage);
+  EXPECT_EQ(run(ImageView(), {0, 0}).status, EstimateStatus::EmptyImage);
   const std::uint8_t px[4] = {};
-  EXPECT_EQ(run(ImageView(px, 0, 2, 2), {0, 0}).status, Status::EmptyImage);
-  EXPECT_EQ(run(ImageView(px, 2, 0, 2), {0, 0}).status, Status::EmptyImage);
-  EXPECT_EQ(run(ImageView(px, -3, 2, 2), {0, 0}).status, Status::EmptyImage);
+  EXPECT_EQ(run(ImageView(px, 0, 2, 2), {0, 0}).status, EstimateStatus::EmptyImage);
+  EXPECT_EQ(run(ImageView(px, 2, 0, 2), {0, 0}).status, EstimateStatus::EmptyImage);
+  EXPECT_EQ(run(ImageView(px, -3, 2, 2), {0, 0}).status, EstimateStatus::EmptyImage);
 }
 
 TEST_P(EveryMethod, StrideSmallerThanWidthIsRefused) {
   const std::vector<std::uint8_t> px(100, 0);
   const Features f = run(ImageView(px.data(), 10, 10, 9), {5, 5});
-  EXPECT_EQ(f.status, Status::InvalidImage);
+  EXPECT_EQ(f.status, EstimateStatus::InvalidImage);
   EXPECT_FALSE(f.detail.empty());
 }
 
 TEST_P(EveryMethod, OnePixelImages) {
   const std::uint8_t free_px = 0, edge_px = 255;
   const Features f = run(ImageView(&free_px, 1, 1, 1), {0, 0});
-  ASSERT_EQ(f.status, Status::CoversFrame);
+  ASSERT_EQ(f.status, EstimateStatus::CoversFrame);
   EXPECT_NEAR(f.centroid.x, 0.0, 1e-9);
   EXPECT_NEAR(f.centroid.y, 0.0, 1e-9);
   EXPECT_EQ(f.bbox, (Rect{0, 0, 1, 1}));
   EXPECT_EQ(f.inner_point, (Point2i{0, 0}));
   expect_finite(f);
-  EXPECT_EQ(run(ImageView(&edge_px, 1, 1, 1), {0, 0}).status, Status::InnerPointOnEdge);
+  EXPECT_EQ(run(ImageView(&edge_px, 1, 1, 1), {0, 0}).status, EstimateStatus::InnerPointOnEdge);
 }
 
 TEST_P(EveryMethod, NoEdgesFillsTheWholeFrameAndSaysSo) {
   const std::vector<std::uint8_t> px(50 * 40, 0);
   const ImageView v(px.data(), 50, 40, 50);
   const Features f = run(v, {10, 30});
-  ASSERT_EQ(f.status, Status::CoversFrame);
+  ASSERT_EQ(f.status, EstimateStatus::CoversFrame);
   EXPECT_EQ(f.bbox, (Rect{0, 0, 50, 40}));
   expect_finite(f);
   if (GetParam() == Method::PixelFilling) {
@@ -68,7 +68,7 @@ TEST_P(EveryMethod, NoEdgesFillsTheWholeFrameAndSaysSo) {
 TEST_P(EveryMethod, AllEdgesHasNoFreePixel) {
   const std::vector<std::uint8_t> px(30 * 20, 255);
   const Features f = run(ImageView(px.data(), 30, 20, 30), {15, 10});
-  EXPECT_EQ(f.status, Status::InnerPointOnEdge);
+  EXPECT_EQ(f.status, EstimateStatus::InnerPointOnEdge);
   EXPECT_FALSE(f.valid());
   EXPECT_FALSE(f.detail.empty());
 }
@@ -84,7 +84,7 @@ TEST_P(EveryMethod, InnerPointOutsideTheFrame) {
   for (Point2i p : {Point2i{-100, 10}, Point2i{10, 35}, Point2i{INT_MAX, INT_MAX},
                     Point2i{INT_MIN, 0}, Point2i{0, INT_MIN}, Point2i{INT_MAX - 2, 3}}) {
     const Features f = run(v, p);
-    EXPECT_EQ(f.status, Status::InnerPointOutside) << p.x << ", " << p.y;
+    EXPECT_EQ(f.status, EstimateStatus::InnerPointOutside) << p.x << ", " << p.y;
   }
 }
 
@@ -99,7 +99,7 @@ TEST_P(EveryMethod, InnerPointOnAnEdgeMovesToTheNearestFreePixel) {
   // With no search radius there is nothing to fall back to.
   Params p;
   p.seed_radius = 0;
-  EXPECT_EQ(run(disc.edge_view(), on_contour, p).status, Status::InnerPointOnEdge);
+  EXPECT_EQ(run(disc.edge_view(), on_contour, p).status, EstimateStatus::InnerPointOnEdge);
 }
 
 TEST_P(EveryMethod, PaddedRowsGiveTheSameAnswer) {
@@ -123,7 +123,7 @@ TEST_P(EveryMethod, InvalidParametersAreRefusedWithAReason) {
   const test::Scene disc = test::disc_scene();
   const auto refused = [&](Params p, const char* name) {
     const Features f = run(disc.edge_view(), {100, 90}, p);
-    EXPECT_EQ(f.status, Status::InvalidParameters) << name;
+    EXPECT_EQ(f.status, EstimateStatus::InvalidParameters) << name;
     EXPECT_NE(f.detail.find(name), std::string::npos) << f.detail;
   };
   Params p;

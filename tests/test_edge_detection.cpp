@@ -68,7 +68,7 @@ TEST(EdgeMap, CannyAndSobelCloseTheContourOfADisc) {
     const ImageView e = map.detect(view_of(img), p);
     ASSERT_EQ(e.width, img.cols);
     const Features f = make_estimator(Method::PixelFilling)->estimate(e, {160, 120}, {});
-    ASSERT_EQ(f.status, Status::Ok);
+    ASSERT_EQ(f.status, EstimateStatus::Ok);
     EXPECT_NEAR(f.centroid.x, 160, 0.5);
     EXPECT_NEAR(f.centroid.y, 120, 0.5);
     // Canny's thin line sits on the boundary; Sobel's band is a few pixels thick.

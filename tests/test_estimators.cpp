@@ -56,7 +56,7 @@ TEST(PixelFilling, ExactOnClosedContoursFromEveryInteriorPoint) {
   for (const Scene& s : test::all_scenes()) {
     for (Point2i seed : test::interior_points(s, 5)) {
       const Features f = est->estimate(s.edge_view(), seed, paper_params());
-      ASSERT_EQ(f.status, Status::Ok) << s.name;
+      ASSERT_EQ(f.status, EstimateStatus::Ok) << s.name;
       EXPECT_EQ(f.area, s.area) << s.name;
       EXPECT_NEAR(f.centroid.x, s.centroid.x, 1e-9) << s.name;
       EXPECT_NEAR(f.centroid.y, s.centroid.y, 1e-9) << s.name;
@@ -157,7 +157,7 @@ TEST(RayCasting, AccurateFromTheCentreOfConvexObjects) {
   for (const Scene& s : {test::disc_scene(), test::square_scene()}) {
     const Features f = make_estimator(Method::RayCasting)
                            ->estimate(s.edge_view(), round_to_pixel(s.centroid), paper_params());
-    ASSERT_EQ(f.status, Status::Ok);
+    ASSERT_EQ(f.status, EstimateStatus::Ok);
     EXPECT_LE(distance(f.centroid, s.centroid), 1.0) << s.name;
     EXPECT_NEAR(f.area / s.area, 1.0, 0.03) << s.name;
     EXPECT_EQ(f.iterations, 1);
@@ -215,7 +215,7 @@ TEST(Leaks, PixelFillingLeaksThroughAOnePixelGap) {
     const Point2i gap = test::open_gap_right(s, inside.x, inside.y);
     const Features f = make_estimator(Method::PixelFilling)->estimate(s.edge_view(), inside, {});
     EXPECT_GE(f.area, 4 * s.area) << s.name << " gap at " << gap.x << ", " << gap.y;
-    EXPECT_NE(f.status, Status::Ok) << s.name;  // it reached the frame border
+    EXPECT_NE(f.status, EstimateStatus::Ok) << s.name;  // it reached the frame border
   }
 }
 
@@ -229,18 +229,18 @@ TEST(Leaks, AnAreaLimitStopsALeakingFillEarly) {
       Params closed;
       closed.grid_size = 4;
       const Features whole = est->estimate(s.edge_view(), inside, closed);
-      Params loose = closed;
+      EstimateOptions loose;
       loose.area_limit = 1.5 * whole.area;
-      const Features same = est->estimate(s.edge_view(), inside, loose);
+      const Features same = est->estimate(s.edge_view(), inside, closed, loose);
       EXPECT_EQ(same.area, whole.area) << s.name;
       EXPECT_EQ(same.centroid.x, whole.centroid.x) << s.name;
 
       test::open_gap_right(s, inside.x, inside.y);
       const Features leak = est->estimate(s.edge_view(), inside, closed);
       ASSERT_GT(leak.area, 3 * whole.area) << s.name;
-      Params limited = closed;
+      EstimateOptions limited;
       limited.area_limit = 2 * whole.area;
-      const Features stopped = est->estimate(s.edge_view(), inside, limited);
+      const Features stopped = est->estimate(s.edge_view(), inside, closed, limited);
       EXPECT_GT(stopped.area, limited.area_limit) << s.name;
       EXPECT_LT(stopped.area, leak.area) << s.name;
       EXPECT_LT(stopped.pixels_visited, leak.pixels_visited) << s.name;
@@ -314,9 +314,10 @@ TEST(GapTolerantFilling, ABreakLongerThanMaxGapIsAnOpening) {
   const Features leak = ours->estimate(s.edge_view(), c, p);
   EXPECT_GT(leak.area, 3 * s.area);
   // The area limit stops it as it stops the other fills.
-  p.area_limit = 2 * s.area;
-  const Features stopped = ours->estimate(s.edge_view(), c, p);
-  EXPECT_GT(stopped.area, p.area_limit);
+  EstimateOptions limited;
+  limited.area_limit = 2 * s.area;
+  const Features stopped = ours->estimate(s.edge_view(), c, p, limited);
+  EXPECT_GT(stopped.area, limited.area_limit);
   EXPECT_LT(stopped.pixels_visited, leak.pixels_visited);
 }
 
@@ -333,7 +334,7 @@ TEST(Leaks, GridFillingHoldsWhenTheGapFallsBetweenGridLinesAndLeaksOnOne) {
       const bool on_column = (gap.x - seed.x) % p.grid_size == 0;
       if (on_row || on_column) continue;
       const Features f = grid->estimate(s.edge_view(), seed, p);
-      ASSERT_EQ(f.status, Status::Ok) << s.name << " from " << seed.x << ", " << seed.y;
+      ASSERT_EQ(f.status, EstimateStatus::Ok) << s.name << " from " << seed.x << ", " << seed.y;
       EXPECT_NEAR(f.area / s.area, 1.0, 0.10) << s.name;
       ++checked;
     }
@@ -406,6 +407,60 @@ TEST(Trace, RecordsWhatEachMethodDidAndNothingWithoutOne) {
     const Features g = make_estimator(m)->estimate(hand.edge_view(), seed, paper_params());
     EXPECT_EQ(g.area, f.area);
     EXPECT_EQ(g.inner_point, f.inner_point);
+  }
+}
+
+// The table's `reads` and `iterative` columns are what the element's property descriptions and
+// the benchmark's sweeps name the methods from: a parameter a method is not said to read changes
+// nothing of its estimates, and one it is said to read changes some.
+TEST(Method, ReadsTheParametersTheTableSaysAndNoOther) {
+  struct Knob {
+    const char* name;
+    bool (*reads)(const MethodInfo&);
+    void (*set)(Params&);  // away from paper_params()
+  };
+  const Knob knobs[] = {
+      {"recursion", [](const MethodInfo& m) { return (m.reads & kReadsRecursion) != 0; },
+       [](Params& p) { p.recursion = 1; }},
+      {"block_size", [](const MethodInfo& m) { return (m.reads & kReadsBlockSize) != 0; },
+       [](Params& p) { p.block_size = 7; }},
+      {"grid_size", [](const MethodInfo& m) { return (m.reads & kReadsGridSize) != 0; },
+       [](Params& p) { p.grid_size = 5; }},
+      {"max_gap", [](const MethodInfo& m) { return (m.reads & kReadsMaxGap) != 0; },
+       [](Params& p) { p.max_gap = 2; }},
+      {"max_iterations", [](const MethodInfo& m) { return m.iterative; },
+       [](Params& p) { p.max_iterations = 1; }},
+      {"convergence", [](const MethodInfo& m) { return m.iterative; },
+       [](Params& p) { p.convergence = 0.5; }},
+  };
+  std::vector<Scene> scenes = test::all_scenes();
+  Scene broken = test::disc_scene();  // a 9 px break: max_gap 12 holds, 2 does not
+  const Point2i c = round_to_pixel(broken.centroid);
+  broken.edges(cv::Rect(c.x + 30, c.y - 4, 20, 9)).setTo(0);
+  scenes.push_back(broken);
+  const auto same = [](const Features& a, const Features& b) {
+    return a.status == b.status && a.area == b.area && a.centroid.x == b.centroid.x &&
+           a.centroid.y == b.centroid.y && a.bbox == b.bbox && a.inner_point == b.inner_point &&
+           a.iterations == b.iterations && a.rays_cast == b.rays_cast &&
+           a.pixels_visited == b.pixels_visited;
+  };
+  for (const MethodInfo& m : kMethods) {
+    auto est = m.make();
+    for (const Knob& k : knobs) {
+      Params changed = paper_params();
+      k.set(changed);
+      bool differs = false;
+      for (const Scene& s : scenes) {
+        for (Point2i seed : test::interior_points(s, 25)) {
+          const Features a = est->estimate(s.edge_view(), seed, paper_params());
+          const Features b = est->estimate(s.edge_view(), seed, changed);
+          differs = differs || !same(a, b);
+          ASSERT_TRUE(k.reads(m) || !differs)
+              << m.nick << " changed with " << k.name << " on " << s.name;
+        }
+      }
+      EXPECT_TRUE(differs || !k.reads(m)) << m.nick << " is said to read " << k.name;
+    }
   }
 }
 

@@ -142,7 +142,7 @@ TEST(ObjectModel, NoSeedTheMovingObjectAndNeverTheStaticBackground) {
     const Frame still = render(s);
     EXPECT_EQ(
         t.track(still.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, {}).status,
-        Status::Searching)
+        TrackStatus::Searching)
         << i;
   }
   // The object moves: it is found.
@@ -298,13 +298,13 @@ TEST(ObjectModel, FoundAgainByItsColoursWithDepthGoingOn) {
   Scene empty = s;
   empty.radius = 0;
   empty.arm = false;
-  Status last = Status::Ok;
+  TrackStatus last = TrackStatus::Ok;
   for (int i = 5; i < 15; ++i) {
     empty.seed = i;
     last = t.track(render(empty).view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp)
                .status;
   }
-  EXPECT_EQ(last, Status::Searching);
+  EXPECT_EQ(last, TrackStatus::Searching);
   // It comes back elsewhere, nearer the camera (larger), moving.
   TrackResult r;
   bool acquired = false;
@@ -363,7 +363,7 @@ TEST(ObjectModel, ASeedOutsideTheFrameSaysSo) {
   Tracker t;
   t.seed({5000, 10});
   const TrackResult r = t.track(f.view(), EdgeParams{}, 0, Method::GapTolerantFilling, {}, {});
-  EXPECT_EQ(r.status, Status::Lost);
+  EXPECT_EQ(r.status, TrackStatus::Lost);
   EXPECT_NE(r.detail.find("outside"), std::string::npos) << r.detail;
   EXPECT_FALSE(r.features.valid());
 }
@@ -379,7 +379,7 @@ TEST(ObjectModel, StartsFromABoxAroundTheObject) {
   Tracker wall;
   wall.seed_box({10, 150, 40, 40});
   const TrackResult w = wall.track(f.view(), EdgeParams{}, 0, Method::PixelFilling, {}, {});
-  EXPECT_EQ(w.status, Status::Lost);
+  EXPECT_EQ(w.status, TrackStatus::Lost);
   EXPECT_FALSE(w.detail.empty());
   EXPECT_FALSE(w.features.valid());
 }

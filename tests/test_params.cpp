@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <set>
 #include <string>
@@ -36,10 +37,28 @@ TEST(Params, EveryRangeEndIsAcceptedAndOneBeyondIsNot) {
   check([](Params& p, int v) { p.max_iterations = v; }, 1, kMaxIterations, "max_iterations");
   check([](Params& p, double v) { p.convergence = v; }, 0.0, kMaxConvergence, "convergence");
   check([](Params& p, int v) { p.seed_radius = v; }, 0, kMaxSeedRadius, "seed_radius");
-  check([](Params& p, double v) { p.area_limit = v; }, 0.0, kMaxAreaLimit, "area_limit");
-  Params p;
-  p.area_limit = std::nan("");
-  EXPECT_NE(validate(p).find("area_limit"), std::string::npos);
+}
+
+TEST(EstimateOptions, TheAreaLimitIsCheckedAsTheParametersAre) {
+  EXPECT_EQ(validate(EstimateOptions{}), "");
+  for (double v : {0.0, kMaxAreaLimit}) {
+    EstimateOptions o;
+    o.area_limit = v;
+    EXPECT_EQ(validate(o), "") << v;
+  }
+  for (double v : {-1.0, 2 * kMaxAreaLimit, std::nan(""), HUGE_VAL}) {
+    EstimateOptions o;
+    o.area_limit = v;
+    EXPECT_NE(validate(o).find("area_limit"), std::string::npos) << v;
+  }
+  // An estimator says so as it says a parameter is out of range.
+  const std::uint8_t free_pixel = 0;
+  EstimateOptions bad;
+  bad.area_limit = -1;
+  const Features f = make_estimator(Method::PixelFilling)
+                         ->estimate(ImageView(&free_pixel, 1, 1, 1), {0, 0}, Params{}, bad);
+  EXPECT_EQ(f.status, EstimateStatus::InvalidParameters);
+  EXPECT_NE(f.detail.find("area_limit"), std::string::npos);
 }
 
 TEST(Method, NamesRoundTrip) {
@@ -82,12 +101,40 @@ TEST(Method, AnIntegerThatIsNoMethodHasDefinedAnswers) {
 }
 
 TEST(Status, NamesAreDistinctAndFeaturesOnlyWhereComputed) {
-  std::set<std::string_view> names;
-  for (int s = 0; s <= static_cast<int>(Status::InvalidParameters); ++s)
-    names.insert(status_name(static_cast<Status>(s)));
-  EXPECT_EQ(names.size(), 11u);
-  EXPECT_TRUE(has_features(Status::ReachedBorder));
-  EXPECT_FALSE(has_features(Status::InnerPointOnEdge));
+  std::set<std::string_view> estimate_names, track_names;
+  for (int s = 0; s <= static_cast<int>(EstimateStatus::InvalidParameters); ++s)
+    estimate_names.insert(status_name(static_cast<EstimateStatus>(s)));
+  for (int s = 0; s <= static_cast<int>(TrackStatus::InvalidParameters); ++s)
+    track_names.insert(status_name(static_cast<TrackStatus>(s)));
+  EXPECT_EQ(estimate_names.size(), 8u);
+  EXPECT_EQ(track_names.size(), 9u);
+  EXPECT_EQ(estimate_names.count("unknown") + track_names.count("unknown"), 0u);
+  EXPECT_EQ(status_name(static_cast<EstimateStatus>(8)), "unknown");
+  EXPECT_EQ(status_name(static_cast<TrackStatus>(9)), "unknown");
+  // Every name the element can post, each once: the two kinds share the names of what the
+  // tracker reports as it came.
+  std::set<std::string_view> all = estimate_names;
+  all.insert(track_names.begin(), track_names.end());
+  EXPECT_EQ(all.size(), 11u);
+  EXPECT_TRUE(has_features(EstimateStatus::ReachedBorder));
+  EXPECT_FALSE(has_features(EstimateStatus::InnerPointOnEdge));
+  EXPECT_TRUE(has_features(TrackStatus::CoversFrame));
+  EXPECT_FALSE(has_features(TrackStatus::Lost));
+}
+
+// The tracker reports an estimate it takes as it is under the estimate's own name, with or
+// without features as the estimate; one without a free pixel at the inner point is refused.
+TEST(Status, AReportedEstimateKeepsItsNameAndItsFeatures) {
+  for (int i = 0; i <= static_cast<int>(EstimateStatus::InvalidParameters); ++i) {
+    const auto s = static_cast<EstimateStatus>(i);
+    const TrackStatus t = reported_status(s);
+    if (s == EstimateStatus::InnerPointOutside || s == EstimateStatus::InnerPointOnEdge) {
+      EXPECT_EQ(t, TrackStatus::Lost) << status_name(s);
+      continue;
+    }
+    EXPECT_EQ(status_name(t), status_name(s));
+    EXPECT_EQ(has_features(t), has_features(s)) << status_name(s);
+  }
 }
 
 }  // namespace

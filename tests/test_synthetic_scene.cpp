@@ -41,7 +41,7 @@ TEST(SyntheticScene, ClosedContoursAreClosed) {
         std::mt19937 rng(9);
         for (const Seed& seed : sample_seeds(s, 12, rng)) {
           const Features f = fill->estimate(s.edge_view(), seed.p, {});
-          EXPECT_EQ(f.status, Status::Ok) << object_name(o) << ' ' << w << ' ' << seed.part;
+          EXPECT_EQ(f.status, EstimateStatus::Ok) << object_name(o) << ' ' << w << ' ' << seed.part;
           EXPECT_NEAR(f.area / s.true_area, 0.97, 0.03) << object_name(o) << ' ' << w;
         }
       }

@@ -48,7 +48,7 @@ TEST(Tracker, ManualWaitsForAnInnerPoint) {
   const Frame f = disc_frame(160, 120, 40);
   Tracker t;
   const TrackResult r = t.track(f.g(), f.e(), 0, Method::GridFilling, {}, manual());
-  EXPECT_EQ(r.status, Status::NoInnerPoint);
+  EXPECT_EQ(r.status, TrackStatus::NoInnerPoint);
   EXPECT_FALSE(r.detail.empty());
   EXPECT_FALSE(r.has_pose);
 }
@@ -80,7 +80,7 @@ TEST(Tracker, DepthFollowsTheSquareRootOfTheArea) {
           tp);
   const Frame bigger = disc_frame(160, 120, 39);
   const TrackResult r = t.track(bigger.g(), bigger.e(), 0.033, Method::PixelFilling, {}, tp);
-  ASSERT_EQ(r.status, Status::Ok);
+  ASSERT_EQ(r.status, TrackStatus::Ok);
   EXPECT_NEAR(r.pose.depth, 39.0 / 30.0, 0.03);  // depth ∝ √area ∝ radius
   EXPECT_EQ(r.pose.depth, r.raw_pose.depth);     // smoothing off
 }
@@ -95,10 +95,10 @@ TEST(Tracker, RefusesALeakReportsTheLastGoodFeaturesThenDropsTheTrack) {
   Tracker t;
   t.seed({160, 120});
   const TrackResult good = t.track(closed.g(), closed.e(), 0, Method::PixelFilling, {}, tp);
-  ASSERT_EQ(good.status, Status::Ok) << good.detail;
+  ASSERT_EQ(good.status, TrackStatus::Ok) << good.detail;
   for (int i = 1; i <= 3; ++i) {
     const TrackResult r = t.track(open.g(), open.e(), i / 30.0, Method::PixelFilling, {}, tp);
-    ASSERT_EQ(r.status, Status::Lost) << i;
+    ASSERT_EQ(r.status, TrackStatus::Lost) << i;
     EXPECT_NE(r.detail.find("leak"), std::string::npos) << r.detail;
     EXPECT_EQ(r.features.area, good.features.area);  // the last good features
     EXPECT_TRUE(r.has_pose);
@@ -106,7 +106,7 @@ TEST(Tracker, RefusesALeakReportsTheLastGoodFeaturesThenDropsTheTrack) {
   // Past the patience the track is dropped: manual acquisition waits again.
   EXPECT_FALSE(t.inner_point().has_value());
   EXPECT_EQ(t.track(closed.g(), closed.e(), 0.2, Method::PixelFilling, {}, tp).status,
-            Status::NoInnerPoint);
+            TrackStatus::NoInnerPoint);
 }
 
 // A leak is refused as soon as the fill passes leak_factor × the last area: it costs about the
@@ -119,9 +119,9 @@ TEST(Tracker, ALeakStopsAtTheLeakFactorInsteadOfFillingTheFrame) {
     Tracker t;
     t.seed({320, 240});
     const TrackResult good = t.track(closed.g(), closed.e(), 0, m, {}, manual());
-    ASSERT_EQ(good.status, Status::Ok) << good.detail;
+    ASSERT_EQ(good.status, TrackStatus::Ok) << good.detail;
     const TrackResult r = t.track(open.g(), open.e(), 1 / 30.0, m, {}, manual());
-    ASSERT_EQ(r.status, Status::Lost);
+    ASSERT_EQ(r.status, TrackStatus::Lost);
     EXPECT_NE(r.detail.find("a leak, not filled"), std::string::npos) << r.detail;
     EXPECT_EQ(r.features.area, good.features.area);
     // The full leak would visit the whole 1280×720 frame; stopped, a few times the disc.
@@ -132,7 +132,7 @@ TEST(Tracker, ALeakStopsAtTheLeakFactorInsteadOfFillingTheFrame) {
     t2.seed({320, 240});
     t2.track(closed.g(), closed.e(), 0, m, {}, manual());
     const TrackResult r2 = t2.track(open.g(), open.e(), 1 / 30.0, m, {}, manual(), &trace);
-    ASSERT_EQ(r2.status, Status::Lost);
+    ASSERT_EQ(r2.status, TrackStatus::Lost);
     std::uint64_t filled = 0;
     for (const auto& run : trace.runs)
       filled +=
@@ -155,7 +155,7 @@ TEST(Tracker, ExtremeTrackerParamsGiveDefinedAnswers) {
       for (int i = 0; i < 3; ++i) {
         const TrackResult r =
             t.track(f.g(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp);
-        EXPECT_NE(r.status, Status::InvalidParameters) << margin << " " << max_area;
+        EXPECT_NE(r.status, TrackStatus::InvalidParameters) << margin << " " << max_area;
         if (r.features.valid()) {
           EXPECT_TRUE(std::isfinite(r.features.area));
         }
@@ -169,7 +169,7 @@ TEST(Tracker, AUserSeedOnTheBackgroundIsRefused) {
   Tracker t;
   t.seed({10, 10});
   const TrackResult r = t.track(f.g(), f.e(), 0, Method::GridFilling, {}, manual());
-  EXPECT_EQ(r.status, Status::Lost);
+  EXPECT_EQ(r.status, TrackStatus::Lost);
   EXPECT_NE(r.detail.find("covers"), std::string::npos) << r.detail;
   EXPECT_FALSE(r.features.valid());  // a refused estimate is never reported as a measurement
   EXPECT_FALSE(r.has_pose);
@@ -180,10 +180,11 @@ TEST(Tracker, CenterAcquisitionTakesWhatIsAtTheCentre) {
   tp.acquisition = Acquisition::Center;
   Tracker t;
   const Frame off = disc_frame(60, 60, 30);
-  EXPECT_EQ(t.track(off.g(), off.e(), 0, Method::GridFilling, {}, tp).status, Status::Searching);
+  EXPECT_EQ(t.track(off.g(), off.e(), 0, Method::GridFilling, {}, tp).status,
+            TrackStatus::Searching);
   const Frame centred = disc_frame(165, 115, 40);
   const TrackResult r = t.track(centred.g(), centred.e(), 0.033, Method::GridFilling, {}, tp);
-  EXPECT_EQ(r.status, Status::Ok);
+  EXPECT_EQ(r.status, TrackStatus::Ok);
   EXPECT_TRUE(r.acquired);
   EXPECT_NEAR(r.features.centroid.x, 165, 2);
 }
@@ -195,11 +196,12 @@ TEST(Tracker, AutoAcquisitionFindsTheMovingObject) {
     tp.strategy = strategy;
     Tracker t;
     const Frame a = disc_frame(100, 120, 35), b = disc_frame(112, 120, 35);
-    EXPECT_EQ(t.track(a.g(), a.e(), 0, Method::GridFilling, {}, tp).status, Status::Searching);
-    EXPECT_EQ(t.track(a.g(), a.e(), 0.033, Method::GridFilling, {}, tp).status, Status::Searching)
+    EXPECT_EQ(t.track(a.g(), a.e(), 0, Method::GridFilling, {}, tp).status, TrackStatus::Searching);
+    EXPECT_EQ(t.track(a.g(), a.e(), 0.033, Method::GridFilling, {}, tp).status,
+              TrackStatus::Searching)
         << "nothing moved";
     const TrackResult r = t.track(b.g(), b.e(), 0.067, Method::GridFilling, {}, tp);
-    ASSERT_EQ(r.status, Status::Ok);
+    ASSERT_EQ(r.status, TrackStatus::Ok);
     EXPECT_TRUE(r.acquired);
     EXPECT_NEAR(r.features.centroid.x, 112, 2);
     EXPECT_NEAR(r.features.centroid.y, 120, 2);
@@ -221,7 +223,7 @@ TEST(Tracker, AutoAcquisitionIgnoresSlivers) {
   for (int i = 0; i < 4; ++i) {
     const Frame f = bar(100 + 6 * i);
     EXPECT_EQ(t.track(f.g(), f.e(), i / 30.0, Method::PixelFilling, {}, edges_model()).status,
-              Status::Searching)
+              TrackStatus::Searching)
         << i;
   }
 }

@@ -15,8 +15,8 @@
 namespace {
 
 using projtrack::Method;
-using projtrack::Status;
 using projtrack::TrackResult;
+using projtrack::TrackStatus;
 using projtrack::gst::draw_overlay;
 using projtrack::gst::glyph;
 using projtrack::gst::kGlyphHeight;
@@ -99,9 +99,9 @@ std::string joined(const std::vector<std::string>& lines) {
 
 TrackResult lost_result() {
   TrackResult r;
-  r.status = Status::Lost;
+  r.status = TrackStatus::Lost;
   r.detail = "the estimate covers the frame (a leak)";
-  r.features.status = Status::Ok;
+  r.features.status = projtrack::EstimateStatus::Ok;
   r.features.centroid = {300.4, 260.0};
   r.features.area = 4321;
   r.features.bbox = {260, 220, 80, 80};
@@ -118,7 +118,7 @@ TEST(Overlay, TextSaysTheStatusWhyAndThePointer) {
   EXPECT_EQ(lost[2], "last seen at 300, 260  area 4321 px");
 
   TrackResult searching;
-  searching.status = Status::Searching;
+  searching.status = TrackStatus::Searching;
   searching.detail = "nothing moves yet";
   const std::vector<std::string> s = overlay_text(searching, Method::PixelFilling);
   EXPECT_EQ(s.front(), "SEARCHING: nothing moves yet");
@@ -126,7 +126,7 @@ TEST(Overlay, TextSaysTheStatusWhyAndThePointer) {
   EXPECT_EQ(s.size(), 2u);  // no pointer, no centroid while searching
 
   TrackResult tracking = lost_result();
-  tracking.status = Status::Ok;
+  tracking.status = TrackStatus::Ok;
   tracking.detail.clear();
   tracking.push = true;
   const std::vector<std::string> t = overlay_text(tracking, Method::GridFilling);
@@ -182,7 +182,7 @@ TEST(Overlay, TextScalesWithTheFrame) {
   EXPECT_EQ(text_scale(1080), 4);
   const int w = 320, h = 240;
   TrackResult waiting;
-  waiting.status = Status::NoInnerPoint;
+  waiting.status = TrackStatus::NoInnerPoint;
   waiting.detail = "no inner point: set one, or click in the video";
   GstBuffer* buf = picture(w, h);
   GstVideoInfo info;
