@@ -303,7 +303,8 @@ def plot_errors(clip, trackers, runs, truth, path):
         ax.axhline(WITHIN, color="k", ls="--", lw=0.8)
         ax.set_ylim(0, 2.05)
         ax.set_ylabel("centroid error / √area")
-        ax.legend(fontsize=7, ncol=3, loc="upper right")
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=7, ncol=3, loc="upper right")
         ax.set_title(f"{clip}: {'projtrack' if group else 'peers'} (lost = 2, dashed = kept)",
                      fontsize=9)
     axes[-1].set_xlabel("frame")
@@ -354,7 +355,8 @@ def contact_sheet(frames_dir, rows, frames, truth, outlines, path):
         return False
     tiles = []
     for i in frames:
-        img = cv2.imread(os.path.join(frames_dir, f"{i:03d}.jpg"))
+        path_i = os.path.join(frames_dir, f"{i:03d}.jpg")
+        img = cv2.imread(path_i) if os.path.exists(path_i) else None
         if img is None:
             return False
         draw_truth(img, outlines.get(i, []))
