@@ -39,6 +39,7 @@ AREA_TOLERANCE = 0.25  # and the area within this share of the true one
 OVER = 2             # an area above this × the truth's, reported as tracked: a leak
 PIECE = 0.5          # an area below this × the truth's: a piece of the object
 NOTABLE_MISSES = 0.05  # a run missing on this share of a clip's frames or more is explained
+SPANS = 0.9          # a reported box covering this share of the true box spans the object
 STILL_SHARE = 0.005  # a reported box with fewer pixels changed over two frames is unchanged
 SCENE_SHARE = 0.2  # and with fewer pixels apart from the clip's median frame, the background
 README_BEGIN = "<!-- real-footage summary: written by bench/real_report.py -->"
@@ -228,8 +229,9 @@ def fmt_count(x):
 
 
 def fmt_share(x):
-    """A share of frames: one decimal under 1 %, so a few misses do not read 0 %."""
-    return MISSING if is_missing(x) else f"{100 * x:.1f} %" if 0 < x < 0.01 else fmt_pct(x)
+    """A share of frames: one decimal under 10 %, so a share just under a threshold does not
+    read as on it, and a few misses do not read 0 %."""
+    return MISSING if is_missing(x) else f"{100 * x:.1f} %" if 0 < x < 0.1 else fmt_pct(x)
 
 
 def fmt_ratio(x):
@@ -415,9 +417,9 @@ CATEGORIES = [
     ("leak", f"the area is more than {OVER:g}× the truth's: the estimate ran out of the object"),
     ("larger", f"the area is {1 + AREA_TOLERANCE:g}–{OVER:g}× the truth's: the estimate takes in "
                "something beside the object"),
-    ("part", f"the area is {PIECE:g}–{1 - AREA_TOLERANCE:g}× the truth's: the estimate covers "
+    ("part", f"the area is {PIECE:g}–{1 - AREA_TOLERANCE:g}× the truth's: the estimate measures "
              "part of the object"),
-    ("piece", f"the area is under {PIECE:g}× the truth's: the estimate covers a piece of the "
+    ("piece", f"the area is under {PIECE:g}× the truth's: the estimate measures a piece of the "
               "object"),
     ("off", f"the area is within {TOLERANCE_TEXT} of the truth's but the centroid is off by more "
             f"than {WITHIN_TEXT}"),
@@ -456,6 +458,13 @@ def direction(dx, dy):
     if abs(dy) >= 2 * abs(dx):
         return v
     return f"{v} and {h}"
+
+
+def box_cover(r, t):
+    """The share of the true box that the reported box covers."""
+    w = min(r["x"] + r["width"], t["x"] + t["width"]) - max(r["x"], t["x"])
+    h = min(r["y"] + r["height"], t["y"] + t["height"]) - max(r["y"], t["y"])
+    return max(0, w) * max(0, h) / (t["width"] * t["height"]) if t["width"] * t["height"] else 0
 
 
 def past_box(r, t):
@@ -503,6 +512,12 @@ def category_detail(key, pairs):
     if math.hypot(dx, dy) >= 1:
         text += f"; the centroid lies a median {math.hypot(dx, dy):.0f} px {direction(dx, dy)} " \
                 "the true one"
+    if key in ("part", "piece"):
+        cover = statistics.median(box_cover(r, t) for r, t in pairs)
+        text += f"; the reported box covers a median {fmt_pct(cover)} of the object's box"
+        if cover >= SPANS:
+            text += (": the estimate spans the object but counts less area than the object "
+                     "has")
     if key in ("leak", "larger", "elsewhere"):
         sides = {s: statistics.median(past_box(r, t)[s] for r, t in pairs)
                  for s in ("left", "right", "above", "below")}
@@ -858,7 +873,7 @@ class Report:
             self.w(f"{head}: it keeps the object on every frame.")
             self.w()
             return
-        self.w(f"{head}: it misses on {k} of {n} frames ({fmt_pct(k / n)}).")
+        self.w(f"{head}: it misses on {k} of {n} frames ({fmt_share(k / n)}).")
         self.w()
         first = rows[0]
         if first["frame"] == 0:

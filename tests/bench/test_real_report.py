@@ -256,6 +256,15 @@ assert '- 3 frames, the element was searching' in why and '"waiting for motion" 
 assert f'| box | projtrack no seed | 1 of 40 ({rr.fmt_share(1 / 40)}) | 1 |' in why, why
 assert '### box: projtrack no seed' not in why
 assert f'### box: {D}' in why and 'it keeps the object on every frame' in why
+# An area under the truth's over a box that spans the object reads as undercounted, not as a
+# piece: the reported box's cover of the true one is measured.
+runs = edit(base_runs(), 'cup', 'projtrack ray-casting', set(range(N)), area=AREA * 0.3)
+spans = render('spans', runs=runs)[1].split('### cup: projtrack ray-casting', 1)[1]
+assert 'covers a median 100 % of the object\'s box: the estimate spans the object' in spans
+runs = edit(base_runs(), 'cup', 'projtrack ray-casting', set(range(N)), area=AREA * 0.3,
+            width=SIDE // 4, height=SIDE // 2)
+piece = render('piece', runs=runs)[1].split('### cup: projtrack ray-casting', 1)[1]
+assert 'covers a median 12 % of the object\'s box.' in piece, piece
 # Contact sheets need frames: none here, and the document says so instead of a picture.
 assert 'No contact sheet' in why
 if rr.cv2 is not None:
