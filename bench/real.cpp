@@ -274,7 +274,8 @@ std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
       p.u.convertTo(p.u, -1, 1, kWarmCb);
       p.v.convertTo(p.v, -1, 1, kWarmCr);
     } else if (how == "noise") {
-      for (auto [m, sigma] : {std::pair{&p.y, kNoiseLuma}, {&p.u, kNoiseChroma}, {&p.v, kNoiseChroma}}) {
+      for (auto [m, sigma] :
+           {std::pair{&p.y, kNoiseLuma}, {&p.u, kNoiseChroma}, {&p.v, kNoiseChroma}}) {
         cv::Mat n(m->size(), CV_16SC1), wide;
         rng.fill(n, cv::RNG::NORMAL, 0, sigma);
         m->convertTo(wide, CV_16SC1);
@@ -504,8 +505,12 @@ Tracker camshift_tracker(const Clip& c) {
 std::FILE* runs_csv = nullptr;
 std::FILE* speed_csv = nullptr;
 
-// The share of the box's pixels whose luma changed by more than 20 in the last two frames: a
-// walking person's box has many, a static region of the background almost none.
+// A pixel has changed when its luma differs by more than this many grey levels (written to
+// meta.json for the report).
+constexpr int kChangedLevels = 20;
+
+// The share of the box's pixels whose luma changed by more than kChangedLevels in the last two
+// frames: a walking person's box has many, a static region of the background almost none.
 double moving_share(const Clip& c, int i, const Rect& box) {
   if (i < 2) return -1;  // not known yet
   const cv::Rect r =
@@ -513,19 +518,19 @@ double moving_share(const Clip& c, int i, const Rect& box) {
   if (r.area() <= 0) return 0;
   cv::Mat diff;
   cv::absdiff(c.luma(i)(r), c.luma(i - 2)(r), diff);
-  return static_cast<double>(cv::countNonZero(diff > 20)) / r.area();
+  return static_cast<double>(cv::countNonZero(diff > kChangedLevels)) / r.area();
 }
 
 // The share of `box`'s pixels on frame `i` that differ from the clip's median frame by more than
-// 20 grey levels: near 0 on a piece of the scene's background (a sign, the lawn), high on what
-// passes through it.
+// kChangedLevels grey levels: near 0 on a piece of the scene's background (a sign, the lawn), high
+// on what passes through it.
 double scene_share(const Clip& c, int i, const Rect& box) {
   const cv::Rect r =
       cv::Rect(box.x, box.y, box.width, box.height) & cv::Rect(0, 0, c.width, c.height);
   if (r.area() <= 0) return 0;
   cv::Mat diff;
   cv::absdiff(c.luma(i)(r), c.median_luma()(r), diff);
-  return static_cast<double>(cv::countNonZero(diff > 20)) / r.area();
+  return static_cast<double>(cv::countNonZero(diff > kChangedLevels)) / r.area();
 }
 
 std::string csv_text(const std::string& s) {
@@ -744,7 +749,7 @@ void write_meta(const std::string& dir, const std::vector<std::unique_ptr<Clip>>
        << "}, \"warm\": {\"luma\": " << kWarmLuma << ", \"cb\": " << kWarmCb
        << ", \"cr\": " << kWarmCr << "}, \"noise\": {\"luma_sigma\": " << kNoiseLuma
        << ", \"chroma_sigma\": " << kNoiseChroma << "}, \"fast\": {\"step\": " << kFastStep
-       << "}},\n  \"clips\": {";
+       << "}},\n  \"changed_levels\": " << kChangedLevels << ",\n  \"clips\": {";
   for (std::size_t k = 0; k < clips.size(); ++k) {
     const Clip& c = *clips[k];
     meta << (k ? "," : "") << "\n    " << json_string(c.name) << ": {\"frames\": " << c.i420.size()

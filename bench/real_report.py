@@ -727,11 +727,14 @@ class Report:
                 m = self.m[(clip, name)]
                 self.w(f"| {clip} | {name} | {m['tracked']} | {m['still']} | {m['static']} |")
         self.w()
+        levels = self.meta.get("changed_levels")
+        levels = "a number of grey levels not recorded" if levels is None else \
+            f"{levels:g} grey levels"
         self.w(f"Unchanged: a reported box in which fewer than {100 * STILL_SHARE:.1f} % of the "
-               "pixels changed by more than 20 grey levels over the last two frames (a held "
+               f"pixels changed by more than {levels} over the last two frames (a held "
                "object at rest, a walker's planted foot, or the background). A static region: "
                f"such a box of which fewer than {100 * SCENE_SHARE:.0f} % of the pixels differ by "
-               "more than 20 grey levels from the clip's median frame (the scene without what "
+               f"more than {levels} from the clip's median frame (the scene without what "
                "passes through it), so the box shows the background.")
         self.w()
 

@@ -84,7 +84,7 @@ def base_meta(clips=('cup', 'box')):
                 default_method=DEFAULT, methods=METHODS,
                 camshift=dict(histogram='hue-saturation', hue_bins=30, saturation_bins=32,
                               saturation_min=30, value_min=10),
-                variants=dict(dark=dict(luma=0.4, chroma=0.7)),
+                variants=dict(dark=dict(luma=0.4, chroma=0.7)), changed_levels=17,
                 clips={c: dict(frames=N, width=W, height=H, fps=25, truth=True, variant='',
                                path='', properties=dict(props)) for c in clips})
     meta['clips']['vtest'] = dict(frames=N, width=W, height=H, fps=10, truth=False, variant='',
@@ -143,6 +143,7 @@ assert f'| ≤ {rr.GOAL_COPIES:g}× |' in text
 # CamShift's histogram and the no-seed properties as projtrack-real recorded them.
 assert 'hue-saturation histogram (30 hue × 32 saturation bins)' in text
 assert 'with no seed (`acquisition=auto`)' in text
+assert 'changed by more than 17 grey levels' in text and ' 20 grey' not in text
 
 # Each target flips with its data.
 few = set(range(N - 3, N))  # 3 of 40 frames: 92.5 % kept
