@@ -56,6 +56,7 @@ struct TruthFrame {
 struct Clip {
   std::string name;
   std::string variant;  // empty for the clip as decoded; else how it was changed (see variant())
+  std::string path;     // the file it was decoded from
   int width = 0, height = 0, fps_n = 30, fps_d = 1;
   std::vector<cv::Mat> i420;  // packed planes, (height * 3 / 2) × width
   std::vector<GstClockTime> pts;
@@ -217,17 +218,29 @@ struct Planes {
 };
 
 // The clip as footage we never tuned on would show it: other light, noise, mirrored, faster.
+// Their settings are written to meta.json (write_meta), from which the report describes them.
 //   mirror  left and right swapped (the truth too)
-//   dark    a dimmer scene: luma at 55 % of its range above black, chroma at 80 % of its swing
-//   warm    a warm light: luma at 92 %, Cb 10 lower, Cr 12 higher
-//   bright  overexposed: luma × 1.35 − 20, the highlights burnt out at 255
-//   gamma   shadows lifted: luma through a gamma of 0.5 (255 · (Y / 255)^0.5)
-//   noise   sensor noise: Gaussian, σ 8 grey levels on luma, 4 on chroma (fixed seed)
-//   fast    every third frame: three times the motion between frames
+//   dark    a dimmer scene: luma at kDarkLuma of its range above black, chroma at kDarkChroma
+//           of its swing
+//   warm    a warm light: luma × kWarmLuma, Cb shifted by kWarmCb, Cr by kWarmCr
+//   bright  overexposed: luma × kBrightGain + kBrightOffset, the highlights burnt out at 255
+//   gamma   shadows lifted: luma through a gamma of kGamma (255 · (Y / 255)^kGamma)
+//   noise   sensor noise: Gaussian, σ kNoiseLuma grey levels on luma, kNoiseChroma on chroma
+//           (fixed seed)
+//   fast    every kFastStep-th frame: kFastStep times the motion between frames
+constexpr double kDarkLuma = 0.55, kDarkChroma = 0.8;
+constexpr double kWarmLuma = 0.92, kWarmCb = -10, kWarmCr = 12;
+constexpr double kBrightGain = 1.35, kBrightOffset = -20;
+constexpr double kGamma = 0.5;
+constexpr double kNoiseLuma = 8, kNoiseChroma = 4;
+constexpr int kFastStep = 3;
+constexpr const char* kVariants[] = {"mirror", "dark", "bright", "gamma", "warm", "noise", "fast"};
+
 std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
   auto c = std::make_unique<Clip>();
   c->name = base.name + "-" + how;
   c->variant = how;
+  c->path = base.path;
   c->width = base.width;
   c->height = base.height;
   c->fps_n = base.fps_n;
@@ -235,7 +248,7 @@ std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
   const int w = base.width, h = base.height;
   cv::RNG rng(12345);
   for (std::size_t i = 0; i < base.i420.size(); ++i) {
-    if (how == "fast" && i % 3) continue;
+    if (how == "fast" && i % kFastStep) continue;
     cv::Mat f = base.i420[i].clone();
     Planes p(f, w, h);
     if (how == "mirror") {
@@ -245,22 +258,24 @@ std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
         flipped.copyTo(*m);
       }
     } else if (how == "dark") {
-      p.y.convertTo(p.y, -1, 0.55, 16 * 0.45);
-      p.u.convertTo(p.u, -1, 0.8, 128 * 0.2);
-      p.v.convertTo(p.v, -1, 0.8, 128 * 0.2);
+      p.y.convertTo(p.y, -1, kDarkLuma, 16 * (1 - kDarkLuma));
+      p.u.convertTo(p.u, -1, kDarkChroma, 128 * (1 - kDarkChroma));
+      p.v.convertTo(p.v, -1, kDarkChroma, 128 * (1 - kDarkChroma));
     } else if (how == "bright") {
-      p.y.convertTo(p.y, -1, 1.35, -20);  // saturates at 0 and 255
+      p.y.convertTo(p.y, -1, kBrightGain, kBrightOffset);  // saturates at 0 and 255
     } else if (how == "gamma") {
       cv::Mat lut(1, 256, CV_8U);
       for (int v = 0; v < 256; ++v)
-        lut.at<std::uint8_t>(v) = cv::saturate_cast<std::uint8_t>(255 * std::sqrt(v / 255.0));
+        lut.at<std::uint8_t>(v) =
+            cv::saturate_cast<std::uint8_t>(255 * std::pow(v / 255.0, kGamma));
       cv::LUT(p.y, lut, p.y);
     } else if (how == "warm") {
-      p.y.convertTo(p.y, -1, 0.92, 0);
-      p.u.convertTo(p.u, -1, 1, -10);
-      p.v.convertTo(p.v, -1, 1, 12);
+      p.y.convertTo(p.y, -1, kWarmLuma, 0);
+      p.u.convertTo(p.u, -1, 1, kWarmCb);
+      p.v.convertTo(p.v, -1, 1, kWarmCr);
     } else if (how == "noise") {
-      for (auto [m, sigma] : {std::pair{&p.y, 8.0}, {&p.u, 4.0}, {&p.v, 4.0}}) {
+      for (auto [m, sigma] :
+           {std::pair{&p.y, kNoiseLuma}, {&p.u, kNoiseChroma}, {&p.v, kNoiseChroma}}) {
         cv::Mat n(m->size(), CV_16SC1), wide;
         rng.fill(n, cv::RNG::NORMAL, 0, sigma);
         m->convertTo(wide, CV_16SC1);
@@ -362,7 +377,11 @@ struct Tracker {
   std::function<Report(int)> process;
 };
 
+// The element's properties in every run, per clip, for meta.json: what the report says was run.
+std::map<std::string, std::map<std::string, std::string>> run_properties;
+
 Tracker projtrack_tracker(const Clip& c, const std::string& name, const std::string& props) {
+  run_properties[c.name][name] = props;
   auto h = std::make_shared<ElementHarness>("projtrack " + props, c.caps("I420"), true);
   return {name, [h, &c](int i) {
             Report r;
@@ -388,6 +407,7 @@ Tracker cvtracker_tracker(const Clip& c, const std::string& algorithm) {
                              " object-initial-y=" + std::to_string(b.y) +
                              " object-initial-width=" + std::to_string(b.width) +
                              " object-initial-height=" + std::to_string(b.height);
+  run_properties[c.name]["cvtracker " + algorithm] = launch;
   auto h = std::make_shared<ElementHarness>(launch, c.caps("RGB"), false);
   return {"cvtracker " + algorithm, [h, &c, b](int i) {
             Report r;
@@ -420,12 +440,19 @@ Tracker cvtracker_tracker(const Clip& c, const std::string& algorithm) {
           }};
 }
 
-// OpenCV's CamShift as its camshiftdemo runs it: a hue histogram of the first frame's true box
-// (pixels with saturation >= 30 and value in [10, 256)), its back projection on every frame,
-// CamShift from the last window. Given BGR frames, it converts them to HSV itself.
+// OpenCV's CamShift on the back projection of a 2-D hue–saturation histogram of the first
+// frame's true box, as issue 12 asks (OpenCV's camshiftdemo uses a hue-only histogram; hue and
+// saturation together also tell a grey object from a white one). Pixels outside camshiftdemo's
+// mask (saturation below kCamShiftSatMin or value below kCamShiftValMin) count neither in the
+// histogram nor in the back projection. CamShift runs from the last window, and a collapsed
+// window restarts around its centre as in the demo. Given BGR frames, it converts them to HSV
+// itself (timed).
+constexpr int kCamShiftHueBins = 30, kCamShiftSatBins = 32;
+constexpr int kCamShiftSatMin = 30, kCamShiftValMin = 10;
+
 Tracker camshift_tracker(const Clip& c) {
   struct State {
-    cv::Mat hist, bgr, hsv, mask, hue, backproj;
+    cv::Mat hist, bgr, hsv, mask, backproj;
     cv::Rect window;
   };
   auto st = std::make_shared<State>();
@@ -433,21 +460,21 @@ Tracker camshift_tracker(const Clip& c) {
             Report r;
             cv::cvtColor(c.i420[i], st->bgr, cv::COLOR_YUV2BGR_I420);  // not timed: the input
             const auto t0 = Clock::now();
-            const float hranges[] = {0, 180};
-            const float* ranges = hranges;
-            const int hsize = 16, channels[] = {0, 0};
+            const float hranges[] = {0, 180}, sranges[] = {0, 256};
+            const float* ranges[] = {hranges, sranges};
+            const int sizes[] = {kCamShiftHueBins, kCamShiftSatBins}, channels[] = {0, 1};
             cv::cvtColor(st->bgr, st->hsv, cv::COLOR_BGR2HSV);
-            cv::inRange(st->hsv, cv::Scalar(0, 30, 10), cv::Scalar(180, 256, 256), st->mask);
-            st->hue.create(st->hsv.size(), CV_8UC1);
-            cv::mixChannels(&st->hsv, 1, &st->hue, 1, channels, 1);
+            cv::inRange(st->hsv, cv::Scalar(0, kCamShiftSatMin, kCamShiftValMin),
+                        cv::Scalar(180, 256, 256), st->mask);
             if (i == 0) {
               const Rect& b = c.truth[0].box;
-              st->window = cv::Rect(b.x, b.y, b.width, b.height);
-              cv::Mat roi(st->hue, st->window), maskroi(st->mask, st->window);
-              cv::calcHist(&roi, 1, nullptr, maskroi, st->hist, 1, &hsize, &ranges);
+              st->window = cv::Rect(b.x, b.y, b.width, b.height) &
+                           cv::Rect(0, 0, st->hsv.cols, st->hsv.rows);
+              cv::Mat roi(st->hsv, st->window), maskroi(st->mask, st->window);
+              cv::calcHist(&roi, 1, channels, maskroi, st->hist, 2, sizes, ranges);
               cv::normalize(st->hist, st->hist, 0, 255, cv::NORM_MINMAX);
             }
-            cv::calcBackProject(&st->hue, 1, nullptr, st->hist, st->backproj, &ranges);
+            cv::calcBackProject(&st->hsv, 1, channels, st->hist, st->backproj, ranges);
             st->backproj &= st->mask;
             cv::RotatedRect rr;
             if (st->window.area() > 0)
@@ -478,8 +505,12 @@ Tracker camshift_tracker(const Clip& c) {
 std::FILE* runs_csv = nullptr;
 std::FILE* speed_csv = nullptr;
 
-// The share of the box's pixels whose luma changed by more than 20 in the last two frames: a
-// walking person's box has many, a static region of the background almost none.
+// A pixel has changed when its luma differs by more than this many grey levels (written to
+// meta.json for the report).
+constexpr int kChangedLevels = 20;
+
+// The share of the box's pixels whose luma changed by more than kChangedLevels in the last two
+// frames: a walking person's box has many, a static region of the background almost none.
 double moving_share(const Clip& c, int i, const Rect& box) {
   if (i < 2) return -1;  // not known yet
   const cv::Rect r =
@@ -487,19 +518,19 @@ double moving_share(const Clip& c, int i, const Rect& box) {
   if (r.area() <= 0) return 0;
   cv::Mat diff;
   cv::absdiff(c.luma(i)(r), c.luma(i - 2)(r), diff);
-  return static_cast<double>(cv::countNonZero(diff > 20)) / r.area();
+  return static_cast<double>(cv::countNonZero(diff > kChangedLevels)) / r.area();
 }
 
 // The share of `box`'s pixels on frame `i` that differ from the clip's median frame by more than
-// 20 grey levels: near 0 on a piece of the scene's background (a sign, the lawn), high on what
-// passes through it.
+// kChangedLevels grey levels: near 0 on a piece of the scene's background (a sign, the lawn), high
+// on what passes through it.
 double scene_share(const Clip& c, int i, const Rect& box) {
   const cv::Rect r =
       cv::Rect(box.x, box.y, box.width, box.height) & cv::Rect(0, 0, c.width, c.height);
   if (r.area() <= 0) return 0;
   cv::Mat diff;
   cv::absdiff(c.luma(i)(r), c.median_luma()(r), diff);
-  return static_cast<double>(cv::countNonZero(diff > 20)) / r.area();
+  return static_cast<double>(cv::countNonZero(diff > kChangedLevels)) / r.area();
 }
 
 std::string csv_text(const std::string& s) {
@@ -519,6 +550,8 @@ void write_row(const Clip& c, const std::string& tracker, const std::string& gro
       r.has_features ? moving_share(c, i, r.box) : -1.0,
       r.has_features ? scene_share(c, i, r.box) : -1.0, csv_text(r.detail).c_str());
 }
+
+constexpr const char* kNoSeedProps = "acquisition=auto";
 
 std::string seed_props(const Clip& c) {
   const Point2i p = c.truth[0].inner;
@@ -564,7 +597,8 @@ void run_all(const Clip& c, Progress& progress) {
                     "projtrack seeded elsewhere"});
     }
   }
-  ts.push_back({projtrack_tracker(c, "projtrack no seed", ""), "projtrack no seed"});
+  // No seed: the element finds the object itself. Said explicitly, not left to the default.
+  ts.push_back({projtrack_tracker(c, "projtrack no seed", kNoSeedProps), "projtrack no seed"});
   if (!c.truth.empty() && !c.variant.empty()) {
     if (GstElementFactory* f = gst_element_factory_find("cvtracker")) {
       gst_object_unref(f);
@@ -675,19 +709,61 @@ void speed_1080p(const Clip& c, Progress& progress) {
   row("harness alone (identity)", t_identity);
 }
 
+// A JSON string literal.
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (char ch : s) {
+    if (ch == '"' || ch == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (static_cast<unsigned char>(ch) < 0x20) {
+      char esc[8];
+      std::snprintf(esc, sizeof esc, "\\u%04x", ch);
+      out += esc;
+    } else {
+      out += ch;
+    }
+  }
+  return out + "\"";
+}
+
 void write_meta(const std::string& dir, const std::vector<std::unique_ptr<Clip>>& clips) {
   std::ofstream meta(dir + "/meta.json");
   meta << "{\n  \"measured\": \"" << utc_now() << "\",\n  \"cpu\": \"" << cpu_model()
        << "\",\n  \"cores\": " << std::thread::hardware_concurrency() << ",\n  \"opencv\": \""
        << CV_VERSION << "\",\n  \"gstreamer\": \"" << gst_version_string()
-       << "\",\n  \"default_method\": \"" << default_method() << "\",\n  \"clips\": {";
+       << "\",\n  \"default_method\": \"" << default_method() << "\",\n  \"methods\": [";
+  bool first = true;
+  for (const MethodInfo& m : kMethods) {
+    meta << (first ? "" : ",") << "\n    {\"name\": " << json_string(std::string(m.nick))
+         << ", \"family\": \"" << (m.family == Family::Rays ? "rays" : "fill")
+         << "\", \"from_paper\": " << (m.from_paper ? "true" : "false") << "}";
+    first = false;
+  }
+  meta << "\n  ],\n  \"camshift\": {\"histogram\": \"hue-saturation\", \"hue_bins\": "
+       << kCamShiftHueBins << ", \"saturation_bins\": " << kCamShiftSatBins
+       << ", \"saturation_min\": " << kCamShiftSatMin << ", \"value_min\": " << kCamShiftValMin
+       << "},\n  \"variants\": {\"mirror\": {}, \"dark\": {\"luma\": " << kDarkLuma
+       << ", \"chroma\": " << kDarkChroma << "}, \"bright\": {\"gain\": " << kBrightGain
+       << ", \"offset\": " << kBrightOffset << "}, \"gamma\": {\"gamma\": " << kGamma
+       << "}, \"warm\": {\"luma\": " << kWarmLuma << ", \"cb\": " << kWarmCb
+       << ", \"cr\": " << kWarmCr << "}, \"noise\": {\"luma_sigma\": " << kNoiseLuma
+       << ", \"chroma_sigma\": " << kNoiseChroma << "}, \"fast\": {\"step\": " << kFastStep
+       << "}},\n  \"changed_levels\": " << kChangedLevels << ",\n  \"clips\": {";
   for (std::size_t k = 0; k < clips.size(); ++k) {
     const Clip& c = *clips[k];
-    meta << (k ? "," : "") << "\n    \"" << c.name << "\": {\"frames\": " << c.i420.size()
+    meta << (k ? "," : "") << "\n    " << json_string(c.name) << ": {\"frames\": " << c.i420.size()
          << ", \"width\": " << c.width << ", \"height\": " << c.height
          << ", \"fps\": " << static_cast<double>(c.fps_n) / c.fps_d
          << ", \"truth\": " << (c.truth.empty() ? "false" : "true") << ", \"variant\": \""
-         << c.variant << "\"}";
+         << c.variant << "\", \"path\": " << json_string(c.path) << ", \"properties\": {";
+    bool first_run = true;
+    if (run_properties.count(c.name))
+      for (const auto& [name, props] : run_properties.at(c.name)) {
+        meta << (first_run ? "" : ", ") << json_string(name) << ": " << json_string(props);
+        first_run = false;
+      }
+    meta << "}}";
   }
   meta << "\n  }\n}\n";
 }
@@ -750,6 +826,7 @@ int main(int argc, char** argv) {
   for (const auto& [name, path] : clip_args) {
     auto c = std::make_unique<Clip>();
     c->name = name;
+    c->path = std::filesystem::absolute(path).string();
     if (!decode(path, *c, max_frames)) {
       std::fprintf(stderr, "projtrack-real: cannot decode %s\n", path.c_str());
       return 1;
@@ -775,7 +852,7 @@ int main(int argc, char** argv) {
     const std::size_t originals = clips.size();
     for (std::size_t k = 0; k < originals; ++k) {
       if (clips[k]->truth.empty()) continue;
-      for (const char* how : {"mirror", "dark", "bright", "gamma", "warm", "noise", "fast"}) {
+      for (const char* how : kVariants) {
         clips.push_back(variant(*clips[k], how));
         write_truth(*clips.back(), out + "/truth");
       }
@@ -810,7 +887,7 @@ int main(int argc, char** argv) {
       if (!c->variant.empty()) continue;
       if (draw && !c->truth.empty())
         draw_frames(*c, out + "/frames", "seeded", seed_props(*c), progress);
-      if (draw) draw_frames(*c, out + "/frames", "no-seed", "", progress);
+      if (draw) draw_frames(*c, out + "/frames", "no-seed", kNoSeedProps, progress);
       if (!c->truth.empty()) speed_1080p(*c, progress);
     }
   }

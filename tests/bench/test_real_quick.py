@@ -59,6 +59,13 @@ assert (int(mosse0["x"]), int(mosse0["width"])) == (int(first_truth["x"]),
 Gst.init(None)
 meta = __import__("json").load(open(os.path.join(out, "meta.json")))
 default = meta["default_method"]
+# The no-seed run asks for acquisition explicitly; CamShift's histogram is hue-saturation; the
+# variants' settings and the table of methods are recorded for the report.
+for clip in ("cup", "box", "vtest"):
+    assert meta["clips"][clip]["properties"]["projtrack no seed"] == "acquisition=auto", clip
+assert meta["camshift"]["histogram"] == "hue-saturation", meta["camshift"]
+assert {m["name"] for m in meta["methods"]} >= {default}, meta["methods"]
+assert os.path.exists(meta["clips"]["cup"]["path"]), meta["clips"]["cup"]
 seed = (int(first_truth["inner_x"]), int(first_truth["inner_y"]))
 pipeline = Gst.parse_launch(
     f"filesrc location={clips['cup']} ! decodebin ! videoconvert ! "

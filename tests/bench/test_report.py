@@ -151,6 +151,9 @@ def never_leaks(r):
 
 flips = {
     'C1': only('ray-casting', lambda r: dict(r, centroid_error_rel=0.001, centroid_x=200.1)),
+    # C2: iteration no longer helps once the iterative variant is further off than one cast.
+    'C2': only('iterative-ray-casting', lambda r: dict(r, centroid_error_rel=0.5,
+                                                       centroid_x=250, centroid_error_px=50)),
     'C3': only('rasterized-ray-casting', lambda r: dict(r, iterations=9)),
     'C5': chain(only('grid-filling', never_leaks), only('ray-casting', leak_at_gaps)),
     'C6': only('grid-filling', lambda r: dict(r, time_us=500)),
