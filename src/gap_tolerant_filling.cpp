@@ -19,11 +19,14 @@ PROJTRACK_VECTOR_CLONES void mark_near(const std::uint8_t* __restrict__ row,
 
 GridFilling::Span GapTolerantFilling::extend(const Context& ctx, bool vertical, int at, int start,
                                              Work& work) {
-  const ImageView& edges = ctx.edges;
-  const int gap = ctx.options.closed_outline ? 1 : ctx.params.max_gap;
-  const int across = vertical ? edges.width : edges.height;
-  // 1. The plain grid run: up to an edge, the border or pixels this line already reached.
+  // 1. The plain grid run: up to an edge, the border or pixels this line already reached. On a
+  // closed outline there is no gap to tolerate, and that is all (a narrow neck of the object is
+  // no break in its contour).
   const Span plain = GridFilling::extend(ctx, vertical, at, start, work);
+  if (ctx.options.closed_outline) return plain;
+  const ImageView& edges = ctx.edges;
+  const int gap = ctx.params.max_gap;
+  const int across = vertical ? edges.width : edges.height;
   const int a = plain.first, b = plain.last;
   ++work.pixels;
 

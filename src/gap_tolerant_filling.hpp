@@ -24,7 +24,7 @@ namespace projtrack {
 class GapTolerantFilling final : public GridFilling {
  protected:
   // The plain grid run, cut before the first pixel where the line passes through a gap of up to
-  // max_gap px (1 px when the options say the edges are a closed outline).
+  // max_gap px; on a closed outline (EstimateOptions::closed_outline), the plain run itself.
   Span extend(const Context& ctx, bool vertical, int at, int start, Work& work) override;
 
  private:

@@ -31,9 +31,8 @@ struct EstimateOptions {
   // centroid and box cover only what was filled.                                     [0, 1e12]
   double area_limit = 0;
   // The edge map is a closed outline (every pixel off the object is an edge: a silhouette's), so
-  // there is no leak to stop and no gap to tolerate: gap-tolerant filling then reads the
-  // narrowest band (as with max_gap 1), so that a narrow neck of the object is not taken for a
-  // break in its contour.
+  // there is no leak to stop and no gap to tolerate: gap-tolerant filling is then grid filling
+  // (a narrow neck of the object is no break in its contour), at grid filling's cost.
   bool closed_outline = false;
 };
 
