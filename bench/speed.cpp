@@ -471,7 +471,7 @@ GstBusSyncReply count_message(GstBus*, GstMessage* m, gpointer data) {
     return GST_BUS_PASS;
   static const std::unordered_set<std::string> tracking = [] {
     std::unordered_set<std::string> names;
-    for (int s = 0; s <= static_cast<int>(TrackStatus::InvalidParameters); ++s)
+    for (int s = 0; s <= static_cast<int>(kLastTrackStatus); ++s)
       if (has_features(static_cast<TrackStatus>(s)))
         names.insert(std::string(status_name(static_cast<TrackStatus>(s))));
     return names;

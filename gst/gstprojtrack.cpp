@@ -60,6 +60,7 @@
 
 #include <gst/video/navigation.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -142,6 +143,9 @@ struct _GstProjtrack {
   int tracked_x, tracked_y;       // GST_OBJECT_LOCK: the tracker's inner point after the last
                                   // frame (current-inner-point-x/y); -1 = none
   Stream* stream;                 // streaming thread
+  // Set when the streaming thread must drop what it is doing (PAUSED → READY, a flush): the
+  // tracker polls it at its checkpoints; cleared when streaming starts again.
+  std::atomic<bool>* interrupt;
 };
 
 enum {
@@ -169,6 +173,7 @@ enum {
   PROP_SMOOTHING_MIN_CUTOFF,
   PROP_SMOOTHING_BETA,
   PROP_PUSH_THRESHOLD,
+  PROP_MAX_WORK,
   PROP_UPDATES,
   PROP_START_BOX,
   PROP_CURRENT_INNER_POINT_X,
@@ -390,6 +395,9 @@ static void gst_projtrack_set_property(GObject* object, guint prop_id, const GVa
     case PROP_PUSH_THRESHOLD:
       s.tracker.push.threshold = g_value_get_double(value);
       break;
+    case PROP_MAX_WORK:
+      s.tracker.max_work = g_value_get_double(value);
+      break;
     case PROP_UPDATES:
       s.updates = static_cast<Updates>(g_value_get_enum(value));
       break;
@@ -478,6 +486,9 @@ static void gst_projtrack_get_property(GObject* object, guint prop_id, GValue* v
     case PROP_PUSH_THRESHOLD:
       g_value_set_double(value, s.tracker.push.threshold);
       break;
+    case PROP_MAX_WORK:
+      g_value_set_double(value, s.tracker.max_work);
+      break;
     case PROP_UPDATES:
       g_value_set_enum(value, static_cast<gint>(s.updates));
       break;
@@ -538,7 +549,10 @@ static void gst_projtrack_reset(GstProjtrack* self) {
 static gboolean gst_projtrack_set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info,
                                        GstCaps*, GstVideoInfo*) {
   auto* self = GST_PROJTRACK(filter);
-  if (!self->stream) self->stream = new Stream;
+  if (!self->stream) {
+    self->stream = new Stream;
+    self->stream->tracker.set_stop_flag(self->interrupt);
+  }
   Stream& st = *self->stream;
   const int width = GST_VIDEO_INFO_WIDTH(in_info), height = GST_VIDEO_INFO_HEIGHT(in_info);
   st.black_level =
@@ -558,6 +572,37 @@ static gboolean gst_projtrack_set_info(GstVideoFilter* filter, GstCaps*, GstVide
     st.height = height;
   }
   return TRUE;
+}
+
+// Streaming starts (READY → PAUSED): a stop asked before is over.
+static gboolean gst_projtrack_start(GstBaseTransform* trans) {
+  GST_PROJTRACK(trans)->interrupt->store(false);
+  return TRUE;
+}
+
+// PAUSED → READY waits for the streaming thread to leave the element (the pads are deactivated
+// under its stream lock): the flag makes a frame in progress stop at the tracker's next
+// checkpoint instead of running to its end. That frame passes through with status=interrupted.
+static GstStateChangeReturn gst_projtrack_change_state(GstElement* element,
+                                                       GstStateChange transition) {
+  auto* self = GST_PROJTRACK(element);
+  if (transition == GST_STATE_CHANGE_PAUSED_TO_READY) {
+    GST_DEBUG_OBJECT(self, "stopping: a frame in progress is interrupted");
+    self->interrupt->store(true);
+  }
+  return GST_ELEMENT_CLASS(gst_projtrack_parent_class)->change_state(element, transition);
+}
+
+// A flush (a seek) likewise stops a frame in progress; the flush's end lets the next frames run.
+static gboolean gst_projtrack_sink_event(GstBaseTransform* trans, GstEvent* event) {
+  auto* self = GST_PROJTRACK(trans);
+  if (GST_EVENT_TYPE(event) == GST_EVENT_FLUSH_START) {
+    GST_DEBUG_OBJECT(self, "flushing: a frame in progress is interrupted");
+    self->interrupt->store(true);
+  } else if (GST_EVENT_TYPE(event) == GST_EVENT_FLUSH_STOP) {
+    self->interrupt->store(false);
+  }
+  return GST_BASE_TRANSFORM_CLASS(gst_projtrack_parent_class)->sink_event(trans, event);
 }
 
 static gboolean gst_projtrack_stop(GstBaseTransform* trans) {
@@ -650,7 +695,7 @@ static GstMessage* result_message(GstProjtrack* self, GstBuffer* buffer, const T
   gst_structure_set(s, "timestamp", G_TYPE_UINT64, pts, "stream-time", G_TYPE_UINT64, stream_time,
                     "running-time", G_TYPE_UINT64, running_time, "duration", G_TYPE_UINT64,
                     GST_BUFFER_DURATION(buffer), "processing-time", G_TYPE_UINT64, processing_ns,
-                    nullptr);
+                    "work", G_TYPE_UINT64, static_cast<guint64>(r.work), nullptr);
   return gst_message_new_element(GST_OBJECT(self), s);
 }
 
@@ -784,6 +829,7 @@ static void gst_projtrack_finalize(GObject* object) {
   auto* self = GST_PROJTRACK(object);
   delete self->stream;
   delete self->settings;
+  delete self->interrupt;
   G_OBJECT_CLASS(gst_projtrack_parent_class)->finalize(object);
 }
 
@@ -793,6 +839,7 @@ static void gst_projtrack_init(GstProjtrack* self) {
   self->frame_width = self->frame_height = 0;
   self->tracked_x = self->tracked_y = -1;
   self->stream = nullptr;
+  self->interrupt = new std::atomic<bool>(false);
   // Metadata needs a writable buffer: never pass buffers through untouched.
   gst_base_transform_set_passthrough(GST_BASE_TRANSFORM(self), FALSE);
 }
@@ -979,6 +1026,14 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
       "A push (a click) is the object brought quickly toward the camera by more than this "
       "fraction of its depth, and back",
       0.01, 10.0, tp.push.threshold, flags);
+  properties[PROP_MAX_WORK] = g_param_spec_double(
+      "max-work", "Max work",
+      "Every method: how much work one frame may take, in passes over the frame's pixels (a "
+      "fill that covers the whole frame costs about 1 to 4). A frame that needs more is cut "
+      "short and reported with status over-budget; settings that can never fit (millions of "
+      "rays) are refused. It bounds the time a frame takes whatever the video shows; 0: no "
+      "limit",
+      0.0, projtrack::kMaxMaxWork, tp.max_work, flags);
   g_object_class_install_properties(gobject_class, N_PROPERTIES, properties);
 
   // Action signals: g_signal_emit_by_name(element, "track-point", x, y) and so on.
@@ -1003,7 +1058,10 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   gst_element_class_add_static_pad_template(element_class, &sink_template);
   gst_element_class_add_static_pad_template(element_class, &src_template);
 
+  element_class->change_state = GST_DEBUG_FUNCPTR(gst_projtrack_change_state);
+  trans_class->start = GST_DEBUG_FUNCPTR(gst_projtrack_start);
   trans_class->stop = GST_DEBUG_FUNCPTR(gst_projtrack_stop);
+  trans_class->sink_event = GST_DEBUG_FUNCPTR(gst_projtrack_sink_event);
   trans_class->src_event = GST_DEBUG_FUNCPTR(gst_projtrack_src_event);
   filter_class->set_info = GST_DEBUG_FUNCPTR(gst_projtrack_set_info);
   trans_class->transform_ip = GST_DEBUG_FUNCPTR(gst_projtrack_transform_ip);

@@ -153,6 +153,7 @@ Rgb status_colour(TrackStatus s) {
     case TrackStatus::CoversFrame:
       return kTracking;
     case TrackStatus::Lost:
+    case TrackStatus::OverBudget:
       return kLost;
     case TrackStatus::Searching:
       return kSearching;
@@ -213,7 +214,7 @@ std::vector<std::string> overlay_text(const TrackResult& r, Method method) {
   if (r.has_pose)
     lines.push_back(format("x %+.2f  y %+.2f  depth %.2f", r.pose.x, r.pose.y, r.pose.depth));
   if (r.features.valid()) {
-    const char* what = r.status == TrackStatus::Lost ? "last seen at" : "centroid";
+    const char* what = has_features(r.status) ? "centroid" : "last seen at";
     lines.push_back(std::string(what) + format(" %.0f, %.0f  area %.0f px", r.features.centroid.x,
                                                r.features.centroid.y, r.features.area));
   }

@@ -1,5 +1,7 @@
 #include "estimator.hpp"
 
+#include <algorithm>
+
 #include "inner_point.hpp"
 
 namespace projtrack {
@@ -59,19 +61,59 @@ Features Estimator::estimate(const ImageView& edges, Point2i inner_point, const 
   f.seed = f.inner_point = *seed;
   fan_.set_count(params.rays);
   Work work;
-  run(Context{edges, params, options, fan_, trace}, f, work);
-  f.inner_point =
-      update_inner_point(edges, f.inner_point, f.centroid, fan_, update_hits_, work, trace, 0);
+  work.budget = options.budget;
+  if (f.seed != inner_point) {  // the square searched for a free pixel
+    const std::uint64_t side = 2 * static_cast<std::uint64_t>(params.seed_radius) + 1;
+    work.cost += side * side;
+  }
+  if (!work.must_stop()) run(Context{edges, params, options, fan_, trace}, f, work);
+  if (!work.stopped)
+    f.inner_point =
+        update_inner_point(edges, f.inner_point, f.centroid, fan_, update_hits_, work, trace, 0);
+  if (options.budget) options.budget->spend(work.cost);
+  f.rays_cast = work.rays;
+  f.pixels_visited = work.pixels;
+  if (work.stopped) return stopped(f, *options.budget, work);
   f.status = border_status(f.bbox, edges.width, edges.height);
   work.reach.add(f.bbox);
   f.reach = work.reach.rect();
-  f.rays_cast = work.rays;
-  f.pixels_visited = work.pixels;
+  return f;
+}
+
+Features Estimator::stopped(Features& f, const WorkBudget& budget, const Work& work) {
+  f.centroid = {};
+  f.area = 0;
+  f.bbox = {};
+  f.reach = work.reach.rect();
+  f.inner_point = f.seed;
+  f.iterations = 0;
+  if (budget.interrupted()) {
+    f.status = EstimateStatus::Interrupted;
+    f.detail = "stopped before the end: the caller's stop flag was set";
+  } else {
+    f.status = EstimateStatus::OverBudget;
+    f.detail = "the work budget ran out: " + std::to_string(budget.spent()) + " of " +
+               std::to_string(budget.limit()) + " units spent, " + std::to_string(work.cost) +
+               " by this estimate";
+  }
   return f;
 }
 
 std::unique_ptr<Estimator> make_estimator(Method m) {
   return is_method(m) ? method_info(m).make() : nullptr;
+}
+
+std::uint64_t least_estimate_cost(Method m, const Params& params) {
+  const std::uint64_t n = std::clamp(params.rays, kMinRays, kMaxRays);
+  const int levels = is_method(m) && (method_info(m).reads & kReadsRecursion)
+                         ? std::clamp(params.recursion, kMinRecursion, kMaxRecursion)
+                         : 1;
+  std::uint64_t rays = n;  // the inner-point update's fan
+  for (std::uint64_t level = 1, fans = 1; level <= static_cast<std::uint64_t>(levels); ++level) {
+    rays += fans * n;  // one cast: n rays from every hit of the level before
+    fans *= n;
+  }
+  return rays * (kCostPerRay + kCostPerRayStep);
 }
 
 }  // namespace projtrack

@@ -24,7 +24,9 @@ class Estimator {
   // Estimates the projection features of the object around `inner_point` from `edges` (non-zero
   // = edge), then updates the inner point for the next frame. Never throws on bad input: the
   // status says what was wrong (see status.hpp). Fills `trace` when one is given. `options`: what
-  // the caller (a tracker) sets for this call alone.
+  // the caller (a tracker) sets for this call alone. With a budget (options.budget) the estimate
+  // spends its work from it, and stops when it runs out (OverBudget) or its stop flag is set
+  // (Interrupted): a stopped estimate has no features.
   Features estimate(const ImageView& edges, Point2i inner_point, const Params& params,
                     Trace* trace = nullptr) {
     return estimate(edges, inner_point, params, EstimateOptions{}, trace);
@@ -53,6 +55,10 @@ class Estimator {
   void iterate(const Context& ctx, Features& out, Work& work, bool recentre, Estimate&& estimate);
 
  private:
+  // `f` as an estimate that a checkpoint stopped (work.stopped): Interrupted or OverBudget,
+  // without features, with the work it did.
+  static Features stopped(Features& f, const WorkBudget& budget, const Work& work);
+
   RayFan fan_;
   std::vector<RayHit> update_hits_;
 };
@@ -64,6 +70,7 @@ void Estimator::iterate(const Context& ctx, Features& out, Work& work, bool rece
   Point2d c_prev = to_double(p);
   for (int it = 1; it <= ctx.params.max_iterations; ++it) {
     const Point2d c = estimate(p, it);
+    if (work.stopped) break;  // c is meaningless: the estimate is void
     out.centroid = c;
     out.iterations = it;
     if (ctx.trace) ctx.trace->iterations.push_back({p, c, out.area});
@@ -73,7 +80,7 @@ void Estimator::iterate(const Context& ctx, Features& out, Work& work, bool rece
     const bool done = converged(p, next, c_prev, c, ctx.params.convergence);
     p = next;
     c_prev = c;
-    if (done) break;
+    if (done || work.must_stop()) break;
   }
   out.inner_point = p;
 }
@@ -81,6 +88,11 @@ void Estimator::iterate(const Context& ctx, Features& out, Work& work, bool rece
 // A new estimator of method `m` (null for an integer that is no Method value): the factory of its
 // row in the table of methods.
 std::unique_ptr<Estimator> make_estimator(Method m);
+
+// The least work (WorkBudget units) one estimate of method `m` costs with `params`, however short
+// its rays: the casts of one iteration (rays^recursion for a method that reads recursion) and the
+// inner-point update. A budget smaller than this can never hold a whole estimate.
+std::uint64_t least_estimate_cost(Method m, const Params& params);
 
 // The status of an estimate covering `bbox` in a width × height frame: Ok, ReachedBorder (it
 // touches the border) or CoversFrame (it touches all four).

@@ -29,7 +29,8 @@ GridFilling::Span GridFilling::extend(const Context& ctx, bool vertical, int at,
     while (a > 0 && !e[(a - 1) * es] && !(r[(a - 1) * rs] & kAlongColumn)) --a;
     while (b < edges.height - 1 && !e[(b + 1) * es] && !(r[(b + 1) * rs] & kAlongColumn)) ++b;
   }
-  work.pixels += b - a + 2;
+  work.fill(b - a + 2);
+  if (vertical) work.cost += (kCostPerColumnPixel - 1) * (b - a + 2);
   return {a, b};
 }
 
@@ -47,11 +48,12 @@ void GridFilling::run(const Context& ctx, Features& out, Work& work) {
   const double cell = static_cast<double>(m) * m / (2.0 * m - 1.0);
   const double limit = ctx.options.area_limit > 0 ? ctx.options.area_limit : HUGE_VAL;
 
-  while (!pending_.empty() && static_cast<double>(count) * cell <= limit) {
+  while (!pending_.empty() && static_cast<double>(count) * cell <= limit && !work.must_stop()) {
     const Pending item = pending_.back();
     pending_.pop_back();
     const int x = item.p.x, y = item.p.y;
-    ++work.pixels;
+    work.fill(1);
+    work.cost += kCostPerRun;
     const std::uint8_t bit = item.vertical ? kAlongColumn : kAlongRow;
     if (edges.row(y)[x] || (reached_.row(y)[x] & bit)) continue;
     const int at = item.vertical ? x : y;
@@ -86,6 +88,7 @@ void GridFilling::run(const Context& ctx, Features& out, Work& work) {
   out.iterations = 1;
   if (ctx.trace) ctx.trace->iterations.push_back({seed, out.centroid, out.area});
   reached_.clear(out.bbox);
+  work.cost += clearing_cost(out.bbox.width, out.bbox.height);
 }
 
 template <>

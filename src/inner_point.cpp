@@ -45,7 +45,7 @@ Point2i move_toward(const ImageView& edges, Point2i from, Point2i to, Work& work
     // The last step lands exactly on `to`, whatever the rounding of the fixed-point slope.
     const int nx = i == steps ? to.x : static_cast<int>((fx + 0x8000) >> 16);
     const int ny = i == steps ? to.y : static_cast<int>((fy + 0x8000) >> 16);
-    ++work.pixels;
+    work.steps(1);
     if (!edges.contains(nx, ny) || edges.at(nx, ny) != 0) break;
     if (nx != x && ny != y && edges.at(nx, y) != 0 && edges.at(x, ny) != 0) break;
     x = nx;
@@ -58,6 +58,7 @@ Point2i recentre(const ImageView& edges, Point2i p, const RayFan& fan, std::vect
                  Work& work, Trace* trace, int iteration) {
   scratch.clear();
   const Point2d mean = cast_fan(edges, p, fan, scratch, work);
+  if (work.stopped) return p;
   if (trace) {
     for (const RayHit& h : scratch) trace->add_ray({to_double(p), h.hit, iteration, 1});
   }

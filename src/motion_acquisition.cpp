@@ -21,7 +21,7 @@ double share_inside(const std::vector<Point2i>& points, const Rect& r) {
 std::optional<Features> MotionAcquisition::acquire(const ImageView& gray, const ImageView& edges,
                                                    Estimator& est, const Params& params,
                                                    double limit, const TrackerParams& tp,
-                                                   std::string& why) {
+                                                   WorkBudget& budget, std::string& why) {
   // Motion history from before a switch of mode (or from the last search) is stale.
   if (tp.acquisition != last_mode_) motion_.reset();
   last_mode_ = tp.acquisition;
@@ -29,8 +29,10 @@ std::optional<Features> MotionAcquisition::acquire(const ImageView& gray, const 
     why = "no inner point: set one, or click in the video";
     return std::nullopt;
   }
+  EstimateOptions options;
+  options.budget = &budget;
   if (tp.acquisition == Acquisition::Center) {
-    Features f = est.estimate(edges, {edges.width / 2, edges.height / 2}, params);
+    Features f = est.estimate(edges, {edges.width / 2, edges.height / 2}, params, options);
     why = implausible(f, edges.width, edges.height, tp);
     if (why.empty()) return f;
     why = "at the frame centre: " + why;
@@ -54,11 +56,13 @@ std::optional<Features> MotionAcquisition::acquire(const ImageView& gray, const 
   }
   std::optional<Features> best;
   double best_score = -1;
-  EstimateOptions limited;
-  limited.area_limit = limit;
+  options.area_limit = limit;
+  std::size_t tried = 0;
   for (const Point2i& c : candidates) {
+    if (budget.exhausted()) break;  // one budget for every seed: what is left is not tried
     if (best && best->bbox.contains(c)) continue;  // already inside the best region found
-    Features f = est.estimate(edges, c, params, limited);
+    Features f = est.estimate(edges, c, params, options);
+    tried += f.status != EstimateStatus::OverBudget && f.status != EstimateStatus::Interrupted;
     if (!implausible(f, edges.width, edges.height, tp).empty()) continue;
     // A sliver between two edges (seen on real footage: a 2×23 px strip) is not an object.
     if (std::min(f.bbox.width, f.bbox.height) < tp.min_acquired_side) continue;
@@ -71,7 +75,11 @@ std::optional<Features> MotionAcquisition::acquire(const ImageView& gray, const 
       best = std::move(f);
     }
   }
-  if (!best)
+  if (!best && (budget.ran_out() || budget.interrupted()))
+    why = "the frame's work budget ran out (" + std::to_string(budget.spent()) + " of " +
+          std::to_string(budget.limit()) + " units) after " + std::to_string(tried) + " of " +
+          std::to_string(candidates.size()) + " seeds";
+  else if (!best)
     why = "no closed region where the frame moved (" + std::to_string(candidates.size()) +
           " seeds tried)";
   return best;

@@ -8,6 +8,7 @@
 #include "estimator.hpp"
 #include "motion_detector.hpp"
 #include "tracker_params.hpp"
+#include "work_budget.hpp"
 
 namespace projtrack {
 
@@ -15,10 +16,12 @@ class MotionAcquisition {
  public:
   // The first estimate of a new track on this frame (`gray` and its `edges`), by
   // TrackerParams::acquisition; none (and `why`) while there is nothing to take. `limit` is the
-  // area the fills may stop at.
+  // area the fills may stop at. Every seed's estimate spends from `budget`: once it runs out (or
+  // its stop flag is set) no further seed is tried, and the best of the seeds tried in full is
+  // taken (budget.ran_out() says whether the search was cut short).
   std::optional<Features> acquire(const ImageView& gray, const ImageView& edges, Estimator& est,
                                   const Params& params, double limit, const TrackerParams& tp,
-                                  std::string& why);
+                                  WorkBudget& budget, std::string& why);
   // Motion history is stale after a track: the next search compares fresh frames.
   void reset() { motion_.reset(); }
 

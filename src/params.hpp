@@ -21,9 +21,11 @@ struct Params {
   int max_gap = 12;  // gap-tolerant filling: longest contour gap it will not cross, px [1, 15]
 };
 
+class WorkBudget;
+
 // What the caller of one estimate (a tracker) sets for that call alone, beside the estimator's
-// parameters (Params: the user's settings): how far a fill may go, and what kind of edge map it
-// is given. Estimator::estimate takes them as their own argument.
+// parameters (Params: the user's settings): how far a fill may go, what kind of edge map it is
+// given, and the work it may do. Estimator::estimate takes them as their own argument.
 struct EstimateOptions {
   // The fills (pixel-, grid- and gap-tolerant filling) stop once their area passes this, px² (0 =
   // never). A tracker sets it just above what it would refuse anyway, so a leak costs about the
@@ -34,6 +36,10 @@ struct EstimateOptions {
   // there is no leak to stop and no gap to tolerate: gap-tolerant filling is then grid filling
   // (a narrow neck of the object is no break in its contour), at grid filling's cost.
   bool closed_outline = false;
+  // The work the estimate may do, and the flag that stops it (work_budget.hpp): it spends what
+  // it does from this budget, shared with whatever else the caller spends it on (a tracker's
+  // frame: every seed, region and piece). Null: unlimited.
+  WorkBudget* budget = nullptr;
 };
 
 inline constexpr int kMinRays = 3, kMaxRays = 1024;

@@ -14,18 +14,19 @@ void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
   BoundsAccumulator bounds;
   const double limit = ctx.options.area_limit > 0 ? ctx.options.area_limit : HUGE_VAL;
 
-  while (!pending_.empty() && static_cast<double>(count) <= limit) {
+  while (!pending_.empty() && static_cast<double>(count) <= limit && !work.must_stop()) {
     const Point2i s = pending_.back();
     pending_.pop_back();
     const std::uint8_t* e = edges.row(s.y);
     std::uint8_t* f = filled_.row(s.y);
-    ++work.pixels;
+    work.fill(1);
+    work.cost += kCostPerRun;
     if (e[s.x] || f[s.x]) continue;  // filled since it was queued
     int x0 = s.x, x1 = s.x;
     while (x0 > 0 && !e[x0 - 1] && !f[x0 - 1]) --x0;
     while (x1 < width - 1 && !e[x1 + 1] && !f[x1 + 1]) ++x1;
     const int len = x1 - x0 + 1;
-    work.pixels += len + 1;
+    work.fill(len + 1);
     for (int x = x0; x <= x1; ++x) f[x] = 1;
     count += len;
     sum_x += static_cast<std::uint64_t>(x0 + x1) * len / 2;
@@ -43,7 +44,7 @@ void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
         if (free && !in_run) pending_.push_back({x, ny});
         in_run = free;
       }
-      work.pixels += len;
+      work.fill(len);
     }
   }
 
@@ -53,6 +54,7 @@ void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
   out.iterations = 1;
   if (ctx.trace) ctx.trace->iterations.push_back({out.seed, out.centroid, out.area});
   filled_.clear(out.bbox);
+  work.cost += clearing_cost(out.bbox.width, out.bbox.height);
 }
 
 template <>

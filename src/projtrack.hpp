@@ -14,3 +14,4 @@
 #include "trace.hpp"
 #include "tracker.hpp"
 #include "tracker_params.hpp"
+#include "work_budget.hpp"

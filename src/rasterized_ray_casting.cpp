@@ -8,6 +8,7 @@ void RasterizedRayCasting::run(const Context& ctx, Features& out, Work& work) {
   const int blocks_x = (width + m - 1) / m;
   const int blocks_y = (height + m - 1) / m;
   selected_.assign(static_cast<std::size_t>(blocks_x) * blocks_y, 0);
+  work.cost += clearing_cost(selected_.size());
 
   double area = 0, sum_x = 0, sum_y = 0;
   BoundsAccumulator bounds;

@@ -19,6 +19,7 @@ void trace_fan(Trace* trace, Point2i origin, const RayHit* hits, int count, int 
 void RayCasting::run(const Context& ctx, Features& out, Work& work) {
   hits_.clear();
   out.centroid = cast_fan(ctx.edges, out.seed, ctx.fan, hits_, work);
+  if (work.stopped) return;  // fewer hits than rays: void
   out.area = fan_area(hits_.data(), ctx.fan.count(), out.seed);
   out.bbox = fan_bounds(out.seed, hits_);
   out.iterations = 1;

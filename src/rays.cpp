@@ -22,14 +22,16 @@ Point2d cast_fan(const ImageView& edges, Point2i origin, const RayFan& fan,
                  std::vector<RayHit>& hits, Work& work) {
   double sx = 0, sy = 0;
   for (int k = 0; k < fan.count(); ++k) {
+    if (work.must_stop()) break;
     const RayHit h = fan.cast(edges, origin, k);
-    work.pixels += h.length + 1;
+    work.steps(h.length + 1);
+    work.cost += kCostPerRay;
+    ++work.rays;
     work.reach.add(h.last_free.x, h.last_free.y);
     sx += h.hit.x;
     sy += h.hit.y;
     hits.push_back(h);
   }
-  work.rays += fan.count();
   return {sx / fan.count(), sy / fan.count()};
 }
 

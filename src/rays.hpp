@@ -6,14 +6,38 @@
 
 #include "geometry.hpp"
 #include "image_view.hpp"
+#include "work_budget.hpp"
 
 namespace projtrack {
 
-// Work counters, reported in Features.
+// Work counters, reported in Features, and what the work costs a budget (work_budget.hpp).
 struct Work {
   std::uint64_t rays = 0;
   std::uint64_t pixels = 0;
   BoundsAccumulator reach;  // every ray's last free pixel: where the rays read up to
+
+  // Budget units: the rays and pixels above, each weighted by what its kind costs, and what else
+  // the estimate did (clearing its masks, looking for a free pixel).
+  std::uint64_t cost = 0;
+  WorkBudget* budget = nullptr;  // none: unlimited, never stopped
+  bool stopped = false;          // a checkpoint said stop: the estimate unwinds, its result void
+
+  // The checkpoint, polled between coarse steps (a ray, a fill's run, a grid line, an iteration):
+  // true once the estimate must stop (the budget would be passed, or the stop flag is set).
+  bool must_stop() {
+    if (!stopped && budget && budget->exhausted(cost)) stopped = true;
+    return stopped;
+  }
+  // A fill read and marked `n` pixels of a row.
+  void fill(std::uint64_t n) {
+    pixels += n;
+    cost += n;
+  }
+  // A ray or a walk stepped through `n` pixels.
+  void steps(std::uint64_t n) {
+    pixels += n;
+    cost += n * kCostPerRayStep;
+  }
 };
 
 struct RayHit {
@@ -49,6 +73,7 @@ class RayFan {
 };
 
 // Casts the whole fan from `origin`, appending the hits to `hits`; returns the mean hit point.
+// Stops between rays when work.must_stop(): then `hits` holds fewer than the fan's rays.
 Point2d cast_fan(const ImageView& edges, Point2i origin, const RayFan& fan,
                  std::vector<RayHit>& hits, Work& work);
 

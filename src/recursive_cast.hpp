@@ -10,7 +10,8 @@ namespace projtrack {
 
 // Casts n rays from the origin, then n from each hit (from its last free pixel), y levels deep:
 // n^y rays in the last level. Keeps the last level's fans: origins() and hits(), fan k being
-// hits()[k*n .. k*n+n).
+// hits()[k*n .. k*n+n). Stops between rays when work.must_stop(): then the fans kept are
+// incomplete, and the mean returned is meaningless.
 class RecursiveCast {
  public:
   // Returns the mean of the last level's hit points. visit(x, y) sees every pixel every ray
@@ -36,14 +37,16 @@ Point2d RecursiveCast::cast(const ImageView& edges, Point2i origin, const RayFan
     hits_.clear();
     for (const Point2i& o : origins_) {
       for (int k = 0; k < n; ++k) {
+        if (work.must_stop()) return {};  // the caller drops the result
         const RayHit h = fan.cast(edges, o, k, visit);
-        work.pixels += h.length + 1;
+        work.steps(h.length + 1);
+        work.cost += kCostPerRay;
+        ++work.rays;
         work.reach.add(h.last_free.x, h.last_free.y);
         hits_.push_back(h);
         if (trace) trace->add_ray({to_double(o), h.hit, iteration, level});
       }
     }
-    work.rays += hits_.size();
     if (level == levels) break;
     next_.clear();
     for (const RayHit& h : hits_) next_.push_back(h.last_free);

@@ -16,6 +16,10 @@ TrackStatus reported_status(EstimateStatus s) {
       return TrackStatus::InvalidImage;
     case EstimateStatus::InvalidParameters:
       return TrackStatus::InvalidParameters;
+    case EstimateStatus::OverBudget:
+      return TrackStatus::OverBudget;
+    case EstimateStatus::Interrupted:
+      return TrackStatus::Interrupted;
     case EstimateStatus::InnerPointOutside:
     case EstimateStatus::InnerPointOnEdge:
       break;
@@ -43,6 +47,10 @@ std::string_view status_name(TrackStatus s) {
       return "invalid-image";
     case TrackStatus::InvalidParameters:
       return "invalid-parameters";
+    case TrackStatus::OverBudget:
+      return "over-budget";
+    case TrackStatus::Interrupted:
+      return "interrupted";
   }
   return "unknown";
 }
@@ -59,6 +67,8 @@ std::string_view status_name(EstimateStatus s) {
     case EstimateStatus::EmptyImage:
     case EstimateStatus::InvalidImage:
     case EstimateStatus::InvalidParameters:
+    case EstimateStatus::OverBudget:
+    case EstimateStatus::Interrupted:
       return status_name(reported_status(s));  // the tracker's status reporting it: its name
   }
   return "unknown";

@@ -20,6 +20,9 @@ enum class EstimateStatus {
   EmptyImage,         // zero width or height, or no pixels
   InvalidImage,       // stride smaller than the width
   InvalidParameters,  // a parameter out of range (see validate())
+  // Stopped before the end (EstimateOptions::budget), without features:
+  OverBudget,   // the work budget ran out
+  Interrupted,  // the budget's stop flag was set (the caller is stopping)
 };
 
 // Where the tracker stands after one frame: tracking with this frame's features, its verdict on
@@ -39,6 +42,13 @@ enum class TrackStatus {
   EmptyImage,         // zero width or height, or no pixels
   InvalidImage,       // stride smaller than the width, or the frame and its edges differ in size
   InvalidParameters,  // a parameter out of range, or settings that conflict
+  // The frame's work ran out (TrackerParams::max_work) before it came to an estimate: not a
+  // measurement, so it counts as a refused frame (as Lost: the last accepted features are kept,
+  // and `patience` of them in a row drop the track); acquisition searches again on the next frame.
+  OverBudget,
+  // The work was stopped (Tracker::set_stop_flag: the pipeline is stopping or flushing): the
+  // track is kept as it was, untouched.
+  Interrupted,
 };
 
 // Short lower-case name, as in GStreamer messages and CSV files ("ok", "reached-border", ...). The
@@ -46,6 +56,9 @@ enum class TrackStatus {
 // outcome and the tracker's status that reports it (reported_status) have the same name.
 std::string_view status_name(EstimateStatus s);
 std::string_view status_name(TrackStatus s);
+// The last value of each, for loops over every status.
+inline constexpr EstimateStatus kLastEstimateStatus = EstimateStatus::Interrupted;
+inline constexpr TrackStatus kLastTrackStatus = TrackStatus::Interrupted;
 
 // Whether the result carries a centroid, an area and a bounding box of this frame.
 inline bool has_features(EstimateStatus s) {
@@ -57,9 +70,9 @@ inline bool has_features(TrackStatus s) {
 }
 
 // The tracker's status for an estimate it takes as it is: accepted (Ok, ReachedBorder,
-// CoversFrame) or failed for want of a usable frame or settings (EmptyImage, InvalidImage,
-// InvalidParameters). An estimate that found no free pixel at the inner point (InnerPointOutside,
-// InnerPointOnEdge) is refused by the tracker: Lost.
+// CoversFrame), failed for want of a usable frame or settings (EmptyImage, InvalidImage,
+// InvalidParameters), or stopped (OverBudget, Interrupted). An estimate that found no free pixel
+// at the inner point (InnerPointOutside, InnerPointOnEdge) is refused by the tracker: Lost.
 TrackStatus reported_status(EstimateStatus s);
 
 }  // namespace projtrack

@@ -17,6 +17,7 @@
 #include "plausibility.hpp"
 #include "pointer.hpp"
 #include "silhouette_pieces.hpp"
+#include "work_budget.hpp"
 
 namespace projtrack {
 
@@ -28,6 +29,7 @@ struct Tracker::Impl {
   void seed_box(const Rect& box);
   void reset();
   const std::optional<Point2i>& inner_point() const { return inner_; }
+  void set_stop_flag(const std::atomic<bool>* stop) { stop_ = stop; }
   TrackResult track(const ColorView& frame, const EdgeParams& edge_params, double t, Method m,
                     const Params& params, const TrackerParams& tp, Trace* trace);
   TrackResult track(const ImageView& gray, const EdgeParams& edge_params, double t, Method m,
@@ -58,9 +60,15 @@ struct Tracker::Impl {
   // Takes `f` as this frame's estimate; `resumed`: the same object found again after a loss.
   void accept(const Features& f, double t, int width, int height, const TrackerParams& tp,
               bool resumed, TrackResult& r);
-  // Refuses this frame's estimate: reports the last accepted one; after `patience` refusals in
-  // a row drops the track (the appearance model keeps the object's colours to find it again).
-  void refuse(std::string why, const TrackerParams& tp, TrackResult& r);
+  // Refuses this frame's estimate: reports the last accepted one, with `status` (Lost, or
+  // OverBudget: no estimate in the frame's work); after `patience` refusals in a row drops the
+  // track (the appearance model keeps the object's colours to find it again).
+  void refuse(std::string why, const TrackerParams& tp, TrackResult& r,
+              TrackStatus status = TrackStatus::Lost);
+  // The result of a frame whose work stopped (the budget ran out, or the stop flag) before an
+  // estimate: Interrupted keeps the track untouched; OverBudget while tracking is a refusal, and
+  // while searching says so.
+  void stopped(const Features& f, const TrackerParams& tp, TrackResult& r);
   // Forgets where the object is; `keep_object`: its colours and its first area stay known.
   void drop(bool keep_object);
   // tp's motion and finder parameters with their grey-level thresholds scaled to the scene's
@@ -70,6 +78,8 @@ struct Tracker::Impl {
 
   EdgeMap edge_map_;
   std::array<std::unique_ptr<Estimator>, kMethodCount> estimators_;  // made on first use
+  WorkBudget budget_;  // this frame's: every estimate spends from it
+  const std::atomic<bool>* stop_ = nullptr;
   std::optional<Point2i> inner_;
   std::optional<Rect> box_;  // the box a track was seeded with, until it starts
   std::optional<Features> last_good_;
@@ -110,6 +120,7 @@ void Tracker::seed(Point2i p) { impl_->seed(p); }
 void Tracker::seed_box(const Rect& box) { impl_->seed_box(box); }
 void Tracker::reset() { impl_->reset(); }
 const std::optional<Point2i>& Tracker::inner_point() const { return impl_->inner_point(); }
+void Tracker::set_stop_flag(const std::atomic<bool>* stop) { impl_->set_stop_flag(stop); }
 
 TrackResult Tracker::track(const ColorView& frame, const EdgeParams& edge_params, double t,
                            Method m, const Params& params, const TrackerParams& tp, Trace* trace) {
@@ -223,10 +234,11 @@ FinderParams Tracker::Impl::finder_params(const TrackerParams& tp) const {
   return p;
 }
 
-void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult& r) {
+void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult& r,
+                           TrackStatus status) {
   ++refused_in_a_row_;
   recent_refusals_ = (recent_refusals_ << 1) | 1u;
-  r.status = TrackStatus::Lost;
+  r.status = status;
   r.detail = std::move(why);
   // Only an accepted estimate is ever reported: with none yet, no features at all.
   r.features = last_good_ ? *last_good_ : Features{};
@@ -275,9 +287,32 @@ TrackResult Tracker::Impl::track(const ImageView& gray, const ImageView& edges, 
 
 TrackResult Tracker::Impl::track(const ColorView& frame, EdgeSource& edges, double t, Method m,
                                  const Params& params, const TrackerParams& tp, Trace* trace) {
+  budget_ = WorkBudget(frame_work_limit(frame.luma.width, frame.luma.height, tp), stop_);
   TrackResult r = track_frame(frame, edges, t, m, params, tp, trace);
   r.inner_point = inner_;
+  r.work = budget_.spent();
+  r.work_limit = budget_.limit();
   return r;
+}
+
+void Tracker::Impl::stopped(const Features& f, const TrackerParams& tp, TrackResult& r) {
+  std::string why = f.detail;
+  if (f.status == EstimateStatus::Interrupted || budget_.interrupted()) {
+    r.status = TrackStatus::Interrupted;
+    r.detail = why.empty() ? "stopped: the work was interrupted" : std::move(why);
+    r.features = last_good_ ? *last_good_ : Features{};
+    r.has_pose = last_good_.has_value();
+    r.pose = pointer_.pose();
+    r.raw_pose = pointer_.raw();
+    return;
+  }
+  if (why.empty()) why = "the frame's work budget ran out";
+  if (inner_ || last_good_) {
+    refuse(std::move(why), tp, r, TrackStatus::OverBudget);
+    return;
+  }
+  r.status = TrackStatus::OverBudget;  // searching: the next frame searches again
+  r.detail = std::move(why);
 }
 
 TrackResult Tracker::Impl::track_frame(const ColorView& frame, EdgeSource& edges, double t,
@@ -296,10 +331,31 @@ TrackResult Tracker::Impl::track_frame(const ColorView& frame, EdgeSource& edges
   // waits for them to be fixed.
   std::string bad = validate(params);
   if (bad.empty()) bad = validate(edges.params());
+  if (bad.empty() && !(tp.max_work >= 0 && tp.max_work <= kMaxMaxWork))
+    bad = "max_work = " + std::to_string(tp.max_work) + " is outside [0, " +
+          std::to_string(kMaxMaxWork) + "]";
+  // Settings whose single estimate can never fit in the frame's budget (millions of rays per
+  // cast) would end every frame over budget: said at once instead.
+  if (const std::uint64_t least = least_estimate_cost(m, params);
+      bad.empty() && least > budget_.limit()) {
+    bad = "one estimate with rays = " + std::to_string(params.rays) +
+          (method_info(m).reads & kReadsRecursion
+               ? " and recursion = " + std::to_string(params.recursion)
+               : std::string()) +
+          " costs at least " + std::to_string(least) +
+          " work units, more than the frame's budget of " + std::to_string(budget_.limit()) +
+          " (max_work = " + std::to_string(tp.max_work) +
+          " × its pixels): fewer rays or levels, or a larger max_work";
+  }
   if (!bad.empty()) {
     TrackResult r;
     r.status = TrackStatus::InvalidParameters;
     r.detail = std::move(bad);
+    return r;
+  }
+  if (budget_.interrupted()) {  // nothing is started while the stop flag is set
+    TrackResult r;
+    stopped(Features{}, tp, r);
     return r;
   }
   // An edge map given as the frame (EdgeDetector::Input) shows no appearance: the edges model.
@@ -327,8 +383,14 @@ TrackResult Tracker::Impl::track_edges(const ColorView& frame, EdgeSource& edges
   if (!inner_) {
     const ImageView all = edges.region({0, 0, w, h});
     std::optional<Features> f =
-        acquisition_.acquire(frame.luma, all, estimator(m), params, limit, tp, r.detail);
+        acquisition_.acquire(frame.luma, all, estimator(m), params, limit, tp, budget_, r.detail);
     if (!f) {
+      if (budget_.ran_out() || budget_.interrupted()) {
+        Features none;
+        none.detail = std::move(r.detail);
+        stopped(none, tp, r);
+        return r;
+      }
       r.status = tp.acquisition == Acquisition::Manual ? TrackStatus::NoInnerPoint
                                                        : TrackStatus::Searching;
       return r;
@@ -339,9 +401,14 @@ TrackResult Tracker::Impl::track_edges(const ColorView& frame, EdgeSource& edges
   }
   EstimateOptions limited;
   limited.area_limit = limit;
+  limited.budget = &budget_;
   const Features f =
       estimate_in_region(edges, estimator(m), m, *inner_, last ? &last->bbox : nullptr, velocity_,
                          params, limited, tp, trace);
+  if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
+    stopped(f, tp, r);
+    return r;
+  }
   // Not the object's doing: say what is wrong, keep the track.
   if (f.status == EstimateStatus::InvalidParameters || f.status == EstimateStatus::InvalidImage ||
       f.status == EstimateStatus::EmptyImage) {
@@ -442,6 +509,7 @@ Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, i
   // tolerate (a narrow neck of the object is not a break in its contour).
   EstimateOptions closed;
   closed.closed_outline = true;
+  closed.budget = &budget_;
   // One estimate per piece, each at full resolution on its piece alone as an edge map (every
   // pixel out of it is an edge), with one pixel of margin so that fills stop at it and rays end
   // on it; the largest piece first, from the track's inner point when it is in it; the features
@@ -464,7 +532,18 @@ Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, i
   for (int k = 0; k < n; ++k) {
     const Mask& piece = pieces_.piece(k);
     // Each work pixel of the piece clears its s×s block of frame pixels.
-    barrier_.assign(static_cast<std::size_t>(r.width) * r.height, 255);
+    const std::size_t barrier = static_cast<std::size_t>(r.width) * r.height;
+    budget_.spend(clearing_cost(barrier));
+    if (budget_.exhausted()) {  // no work left to lay this piece out at full resolution
+      Features none;
+      none.status =
+          budget_.interrupted() ? EstimateStatus::Interrupted : EstimateStatus::OverBudget;
+      none.detail = "the work budget ran out: " + std::to_string(budget_.spent()) + " of " +
+                    std::to_string(budget_.limit()) + " units spent, before piece " +
+                    std::to_string(k + 1) + " of the silhouette";
+      return none;
+    }
+    barrier_.assign(barrier, 255);
     const Rect& pr = piece.rect();
     for (int wy = 0; wy < pr.height; ++wy) {
       const std::uint8_t* in = piece.row(wy);
@@ -494,6 +573,8 @@ Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, i
     translate(f, r.x, r.y);
     if (t) t->translate(r.x, r.y);
     if (t && t != trace) trace->append(*t);
+    if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted)
+      return f;  // no estimate of the whole silhouette
     if (!f.valid()) {
       if (k == 0) return f;  // the estimator's own failure: say what it was
       continue;
@@ -556,6 +637,11 @@ TrackResult Tracker::Impl::track_appearance(const ColorView& frame, EdgeSource& 
     const bool seeded = inner_.has_value();
     if (find_object(frame, edges, tp, resumed, why)) {
       const Features f = estimate_on_silhouette(m, params, w, h, trace);
+      if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
+        object_.lose();
+        stopped(f, tp, r);
+        return r;
+      }
       why = implausible(f, w, h, tp);
       if (why.empty()) {
         accept(f, t, w, h, tp, resumed, r);
@@ -578,6 +664,10 @@ TrackResult Tracker::Impl::track_appearance(const ColorView& frame, EdgeSource& 
     return r;
   }
   const Features f = estimate_on_silhouette(m, params, w, h, trace);
+  if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
+    stopped(f, tp, r);
+    return r;
+  }
   std::string why = refused(f, w, h, tp, last_good_ ? &*last_good_ : nullptr, HUGE_VAL);
   if (!why.empty()) {
     refuse(std::move(why), tp, r);

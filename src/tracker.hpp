@@ -9,6 +9,8 @@
 // themselves (edge_region), as in the paper, and motion_acquisition finds new objects.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,6 +42,10 @@ struct TrackResult {
   Pose pose;              // smoothed (when TrackerParams::smoothing)
   Pose raw_pose;
   bool push = false;  // a push completed on this frame
+  // The work this frame's estimates did (work units, work_budget.hpp), against its budget
+  // (frame_work_limit(): WorkBudget::kUnlimited when TrackerParams::max_work is 0).
+  std::uint64_t work = 0;
+  std::uint64_t work_limit = 0;
 };
 
 class Tracker {
@@ -58,6 +64,11 @@ class Tracker {
   void reset();
   // Where the inner point is now (also TrackResult::inner_point of the last frame).
   const std::optional<Point2i>& inner_point() const;
+  // A flag another thread may set to stop the frame being tracked at its next checkpoint (a ray,
+  // a fill's run, a seed): that frame ends with TrackStatus::Interrupted and the track is kept as
+  // it was; so does every frame while the flag is set. Null: none. The flag must outlive the
+  // Tracker (or be replaced).
+  void set_stop_flag(const std::atomic<bool>* stop);
 
   // One frame taken at `t` seconds, with edges computed here with `edge_params`: only around the
   // object while tracking. A frame with chroma gives the appearance model its colours; a gray

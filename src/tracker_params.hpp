@@ -1,6 +1,10 @@
 // Everything that tunes the tracker, stage by stage.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
 #include "finder_params.hpp"
 #include "motion_detector.hpp"
 #include "object_model_params.hpp"
@@ -77,9 +81,28 @@ struct TrackerParams {
   // 0: never.
   int still_frames = 4;
 
+  // The work one frame may do, as a multiple of the frame's pixels, in work units (about what
+  // one pixel of a fill costs; work_budget.hpp): every estimate of the frame (acquisition's
+  // seeds, the regions an estimate is redone in, the silhouette's pieces) spends from it. A frame
+  // that runs out ends with TrackStatus::OverBudget. 0: unlimited. See frame_work_limit().
+  double max_work = 4;
+
   bool smoothing = true;  // One Euro filter on x, y and depth
   OneEuroFilter::Params filter;
   PushDetector::Params push;
 };
+
+// The least budget a frame gets, work units: a tiny frame can still afford the default rays.
+inline constexpr std::uint64_t kLeastFrameWork = 1 << 18;
+inline constexpr double kMaxMaxWork = 1e6;
+
+// The work budget of one width × height frame: TrackerParams::max_work × its pixels, at least
+// kLeastFrameWork; WorkBudget::kUnlimited (all bits set) when max_work is 0 (or not a number).
+inline std::uint64_t frame_work_limit(int width, int height, const TrackerParams& tp) {
+  if (!(tp.max_work > 0)) return ~std::uint64_t{0};
+  const double pixels = static_cast<double>(std::max(width, 0)) * std::max(height, 0);
+  const double limit = std::min(tp.max_work, kMaxMaxWork) * pixels;
+  return std::max(kLeastFrameWork, static_cast<std::uint64_t>(std::min(limit, 1e18)));
+}
 
 }  // namespace projtrack

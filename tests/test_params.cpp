@@ -102,30 +102,32 @@ TEST(Method, AnIntegerThatIsNoMethodHasDefinedAnswers) {
 
 TEST(Status, NamesAreDistinctAndFeaturesOnlyWhereComputed) {
   std::set<std::string_view> estimate_names, track_names;
-  for (int s = 0; s <= static_cast<int>(EstimateStatus::InvalidParameters); ++s)
+  for (int s = 0; s <= static_cast<int>(kLastEstimateStatus); ++s)
     estimate_names.insert(status_name(static_cast<EstimateStatus>(s)));
-  for (int s = 0; s <= static_cast<int>(TrackStatus::InvalidParameters); ++s)
+  for (int s = 0; s <= static_cast<int>(kLastTrackStatus); ++s)
     track_names.insert(status_name(static_cast<TrackStatus>(s)));
-  EXPECT_EQ(estimate_names.size(), 8u);
-  EXPECT_EQ(track_names.size(), 9u);
+  EXPECT_EQ(estimate_names.size(), 10u);
+  EXPECT_EQ(track_names.size(), 11u);
   EXPECT_EQ(estimate_names.count("unknown") + track_names.count("unknown"), 0u);
-  EXPECT_EQ(status_name(static_cast<EstimateStatus>(8)), "unknown");
-  EXPECT_EQ(status_name(static_cast<TrackStatus>(9)), "unknown");
+  EXPECT_EQ(status_name(static_cast<EstimateStatus>(10)), "unknown");
+  EXPECT_EQ(status_name(static_cast<TrackStatus>(11)), "unknown");
   // Every name the element can post, each once: the two kinds share the names of what the
   // tracker reports as it came.
   std::set<std::string_view> all = estimate_names;
   all.insert(track_names.begin(), track_names.end());
-  EXPECT_EQ(all.size(), 11u);
+  EXPECT_EQ(all.size(), 13u);
   EXPECT_TRUE(has_features(EstimateStatus::ReachedBorder));
   EXPECT_FALSE(has_features(EstimateStatus::InnerPointOnEdge));
   EXPECT_TRUE(has_features(TrackStatus::CoversFrame));
   EXPECT_FALSE(has_features(TrackStatus::Lost));
+  EXPECT_FALSE(has_features(TrackStatus::OverBudget));
+  EXPECT_FALSE(has_features(TrackStatus::Interrupted));
 }
 
 // The tracker reports an estimate it takes as it is under the estimate's own name, with or
 // without features as the estimate; one without a free pixel at the inner point is refused.
 TEST(Status, AReportedEstimateKeepsItsNameAndItsFeatures) {
-  for (int i = 0; i <= static_cast<int>(EstimateStatus::InvalidParameters); ++i) {
+  for (int i = 0; i <= static_cast<int>(kLastEstimateStatus); ++i) {
     const auto s = static_cast<EstimateStatus>(i);
     const TrackStatus t = reported_status(s);
     if (s == EstimateStatus::InnerPointOutside || s == EstimateStatus::InnerPointOnEdge) {

@@ -42,7 +42,8 @@ constexpr int kFormatCount = sizeof(kFormats) / sizeof(kFormats[0]);
 const std::set<std::string> kStatuses = {
     "ok",          "reached-border", "covers-frame",        "lost",
     "searching",   "no-inner-point", "inner-point-outside", "inner-point-on-edge",
-    "empty-image", "invalid-image",  "invalid-parameters"};
+    "empty-image", "invalid-image",  "invalid-parameters",  "over-budget",
+    "interrupted"};
 
 // The element from the build (a path meson gives), scanned in this process: the plugin is
 // instrumented like the target.

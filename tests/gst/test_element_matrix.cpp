@@ -39,7 +39,8 @@ constexpr const char* kFormats[] = {"GRAY8", "I420", "YV12", "NV12", "NV21", "Y4
 const std::set<std::string> kStatuses = {
     "ok",          "reached-border", "covers-frame",        "lost",
     "searching",   "no-inner-point", "inner-point-outside", "inner-point-on-edge",
-    "empty-image", "invalid-image",  "invalid-parameters"};
+    "empty-image", "invalid-image",  "invalid-parameters",  "over-budget",
+    "interrupted"};
 
 std::string caps_of(const char* format, int w, int h) {
   return "video/x-raw,format=" + std::string(format) + ",width=" + std::to_string(w) +
