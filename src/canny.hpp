@@ -11,12 +11,17 @@
 
 namespace projtrack {
 
+class WorkBudget;
+
 class CannyDetector {
  public:
   // Edges of `src` (replicated at its border): a view of src's size, 255 on an edge and 0
   // elsewhere, valid until the next call. Thresholds as cv::Canny's: swapped if low > high,
-  // floored. An invalid `src` gives an empty view.
-  ImageView detect(const ImageView& src, double low, double high);
+  // floored. An invalid `src` gives an empty view. With a budget (work_budget.hpp) the work is
+  // spent from it, and checked every few rows: once it runs out (or its stop flag is set), the
+  // rows not reached and the weak candidates are left "not an edge" (budget->ran_out() or
+  // interrupted() say so): the view is then incomplete.
+  ImageView detect(const ImageView& src, double low, double high, WorkBudget* budget = nullptr);
 
  private:
   std::vector<std::int16_t> dx_, dy_, mag_;  // three rows each, a border pixel each side

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "box_blur.hpp"
+#include "work_budget.hpp"
 
 namespace projtrack {
 
@@ -35,7 +36,8 @@ cv::Mat EdgeMap::wrap_buffer(std::vector<T>& buffer, int rows, int cols, int typ
   return cv::Mat(rows, cols, type, buffer.data());  // standalone: filters see no pixels beyond
 }
 
-ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const Rect& region) {
+ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const Rect& region,
+                          WorkBudget* budget) {
   if (!gray.valid()) return {};
   const Rect r = clip_to_frame(region, gray.width, gray.height);
   if (r.empty()) return {};
@@ -43,7 +45,16 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
   if (params.detector == EdgeDetector::Input && params.input_black_level <= 0)
     return ImageView(gray.row(y0) + x0, cols, rows, gray.stride);
   const ImageView in_region(gray.row(y0) + x0, cols, rows, gray.stride);
+  // The budget's charge for one pass over the region's pixels by a vectorised filter.
+  const std::uint64_t pass = static_cast<std::uint64_t>(rows) * cols / kScannedPixelsPerCost;
+  // Out of work: a region without edges (the caller's budget says it is incomplete).
+  const auto none = [&] {
+    cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);
+    edges.setTo(0);
+    return view_of(edges);
+  };
   if (params.detector == EdgeDetector::Input) {
+    if (budget) budget->spend(pass);
     cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);
     cv::threshold(wrap(in_region), edges, std::min(params.input_black_level, 255), 255,
                   cv::THRESH_BINARY);
@@ -53,6 +64,10 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
   const int passes = std::clamp(params.blur, 0, kMaxBlurPasses);
   ImageView blurred = in_region;
   for (int i = 0; i < passes; ++i) {
+    if (budget) {
+      budget->spend(2 * pass);  // nine reads a pixel, in two separable passes
+      if (budget->exhausted()) return none();
+    }
     // The first pass reads the frame around the region; later ones replicate the region's border.
     cv::Mat dst = wrap_buffer(blurred_[i % 2], rows, cols, CV_8UC1);
     if (i == 0)
@@ -65,7 +80,11 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
   const double high = std::max(0.0, params.high);
 
   if (params.detector == EdgeDetector::Canny) {
-    return canny_.detect(blurred, low, high);
+    return canny_.detect(blurred, low, high, budget);
+  }
+  if (budget) {  // two Sobel filters in 16 bits, then the threshold
+    budget->spend(8 * pass);
+    if (budget->exhausted()) return none();
   }
   // Canny keeps its own map; only Sobel writes into edges_.
   cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);

@@ -50,7 +50,11 @@ class EdgeMap {
   // needs around its object, at a fraction of the cost. The first filter reads the real pixels
   // around the region; within a few pixels of the region's own border the edges may differ from
   // the whole frame's. `region` is clipped to the frame; an empty region gives an empty view.
-  ImageView detect(const ImageView& gray, const EdgeParams& params, const Rect& region);
+  // With a budget (work_budget.hpp), the work is spent from it and checked between blur passes
+  // and every few rows of Canny: once it runs out (or its stop flag is set), what was not reached
+  // is left without edges (budget->ran_out() or interrupted() say the view is incomplete).
+  ImageView detect(const ImageView& gray, const EdgeParams& params, const Rect& region,
+                   WorkBudget* budget = nullptr);
 
  private:
   // Buffers sized for the largest region seen; each call wraps the part it needs, so a region

@@ -3,7 +3,7 @@
 namespace projtrack {
 
 ImageView EdgeSource::region(const Rect& r) {
-  if (map_) return map_->detect(gray_, params_, r);
+  if (map_) return map_->detect(gray_, params_, r, budget_);
   const ImageView& f = given_;
   const Rect c = clip_to_frame(r, f.width, f.height);
   if (!f.valid() || c.empty()) return {};
@@ -12,6 +12,8 @@ ImageView EdgeSource::region(const Rect& r) {
 
 ImageView EdgeSource::work(const WorkFrame& wf, EdgeMap& map,
                            std::vector<std::uint8_t>& buffer) const {
+  // Not charged to the budget: a work frame is bounded by the work scale (WorkFrame), whatever
+  // the frame's size or content.
   if (map_) return map.detect(wf.view().luma, params_);
   const Rect& r = wf.rect();
   const int s = wf.scale();

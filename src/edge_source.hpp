@@ -9,6 +9,7 @@
 #include "edge_detection.hpp"
 #include "geometry.hpp"
 #include "image_view.hpp"
+#include "work_budget.hpp"
 #include "work_frame.hpp"
 
 namespace projtrack {
@@ -22,6 +23,10 @@ class EdgeSource {
   const ImageView& frame() const { return map_ ? gray_ : given_; }
   // The parameters edges are detected with (defaults for given edges).
   const EdgeParams& params() const { return params_; }
+  // The budget region() spends its work from (work_budget.hpp; null: none). Once it runs out,
+  // regions come back incomplete (without edges where the work stopped). Work frames, bounded by
+  // their scale, are not charged.
+  void set_budget(WorkBudget* budget) { budget_ = budget; }
   // The edges of `region` (clipped to the frame), valid until the next call.
   ImageView region(const Rect& r);
   // The edges of a work frame (see WorkFrame), valid until the next call with the same `map`:
@@ -35,6 +40,7 @@ class EdgeSource {
  private:
   ImageView given_;
   EdgeMap* map_ = nullptr;
+  WorkBudget* budget_ = nullptr;
   ImageView gray_;
   EdgeParams params_;
 };

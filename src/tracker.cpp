@@ -288,6 +288,7 @@ TrackResult Tracker::Impl::track(const ImageView& gray, const ImageView& edges, 
 TrackResult Tracker::Impl::track(const ColorView& frame, EdgeSource& edges, double t, Method m,
                                  const Params& params, const TrackerParams& tp, Trace* trace) {
   budget_ = WorkBudget(frame_work_limit(frame.luma.width, frame.luma.height, tp), stop_);
+  edges.set_budget(&budget_);
   TrackResult r = track_frame(frame, edges, t, m, params, tp, trace);
   r.inner_point = inner_;
   r.work = budget_.spent();
@@ -649,6 +650,9 @@ TrackResult Tracker::Impl::track_appearance(const ColorView& frame, EdgeSource& 
         return r;
       }
       object_.lose();
+    } else if (budget_.ran_out() || budget_.interrupted()) {  // its edges were cut short
+      stopped(Features{}, tp, r);
+      return r;
     }
     if (seeded) {  // the user's point: keep trying it for a while, as a refused estimate
       refuse(std::move(why), tp, r);
@@ -660,7 +664,10 @@ TrackResult Tracker::Impl::track_appearance(const ColorView& frame, EdgeSource& 
   }
   const Point2i hint = inner_ ? *inner_ : Point2i{-1, -1};
   if (!object_.find(frame, edges, velocity_, hint, tp.object, silhouette_)) {
-    refuse("nothing of the object's colours is left where it was", tp, r);
+    if (budget_.ran_out() || budget_.interrupted())  // its edges were cut short
+      stopped(Features{}, tp, r);
+    else
+      refuse("nothing of the object's colours is left where it was", tp, r);
     return r;
   }
   const Features f = estimate_on_silhouette(m, params, w, h, trace);

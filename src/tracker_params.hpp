@@ -85,7 +85,7 @@ struct TrackerParams {
   // one pixel of a fill costs; work_budget.hpp): every estimate of the frame (acquisition's
   // seeds, the regions an estimate is redone in, the silhouette's pieces) spends from it. A frame
   // that runs out ends with TrackStatus::OverBudget. 0: unlimited. See frame_work_limit().
-  double max_work = 4;
+  double max_work = 8;
 
   bool smoothing = true;  // One Euro filter on x, y and depth
   OneEuroFilter::Params filter;
