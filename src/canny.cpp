@@ -177,12 +177,13 @@ ImageView CannyDetector::detect(const ImageView& src, double low_threshold, doub
   }
 
   if (budget && !stopped) {
-    budget->spend(static_cast<std::uint64_t>(h % kRowsPerCheckpoint == 0 ? kRowsPerCheckpoint
-                                                                         : h % kRowsPerCheckpoint) *
-                      w / kScannedPixelsPerCost +
-                  strong * kCostPerStrongGradient +
-                  (stack_.size() + maybes_.size()) * kCostPerCandidate);
-    stopped = budget->exhausted();
+    // The rows since the last checkpoint, done; the hysteresis, done only if it can be paid.
+    const int last_rows = h % kRowsPerCheckpoint == 0 ? kRowsPerCheckpoint : h % kRowsPerCheckpoint;
+    budget->spend(static_cast<std::uint64_t>(last_rows) * w / kScannedPixelsPerCost +
+                  strong * kCostPerStrongGradient);
+    const std::uint64_t hysteresis = (stack_.size() + maybes_.size()) * kCostPerCandidate;
+    stopped = budget->exhausted(hysteresis);
+    if (!stopped) budget->spend(hysteresis);
   }
   if (stopped) stack_.clear();  // an incomplete map: the weak candidates are dropped below
 

@@ -54,7 +54,10 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
     return view_of(edges);
   };
   if (params.detector == EdgeDetector::Input) {
-    if (budget) budget->spend(pass);
+    if (budget) {
+      if (budget->exhausted(pass)) return none();
+      budget->spend(pass);
+    }
     cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);
     cv::threshold(wrap(in_region), edges, std::min(params.input_black_level, 255), 255,
                   cv::THRESH_BINARY);
@@ -64,9 +67,9 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
   const int passes = std::clamp(params.blur, 0, kMaxBlurPasses);
   ImageView blurred = in_region;
   for (int i = 0; i < passes; ++i) {
-    if (budget) {
-      budget->spend(2 * pass);  // nine reads a pixel, in two separable passes
-      if (budget->exhausted()) return none();
+    if (budget) {  // nine reads a pixel, in two separable passes
+      if (budget->exhausted(2 * pass)) return none();
+      budget->spend(2 * pass);
     }
     // The first pass reads the frame around the region; later ones replicate the region's border.
     cv::Mat dst = wrap_buffer(blurred_[i % 2], rows, cols, CV_8UC1);
@@ -83,8 +86,8 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
     return canny_.detect(blurred, low, high, budget);
   }
   if (budget) {  // two Sobel filters in 16 bits, then the threshold
+    if (budget->exhausted(8 * pass)) return none();
     budget->spend(8 * pass);
-    if (budget->exhausted()) return none();
   }
   // Canny keeps its own map; only Sobel writes into edges_.
   cv::Mat edges = wrap_buffer(edges_, rows, cols, CV_8UC1);

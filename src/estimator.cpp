@@ -105,7 +105,9 @@ std::unique_ptr<Estimator> make_estimator(Method m) {
 
 std::uint64_t least_estimate_cost(Method m, const Params& params) {
   const std::uint64_t n = std::clamp(params.rays, kMinRays, kMaxRays);
-  const int levels = is_method(m) && (method_info(m).reads & kReadsRecursion)
+  const bool casts = is_method(m) && method_info(m).family == Family::Rays;
+  const int levels = !casts ? 0
+                     : method_info(m).reads & kReadsRecursion
                          ? std::clamp(params.recursion, kMinRecursion, kMaxRecursion)
                          : 1;
   std::uint64_t rays = n;  // the inner-point update's fan

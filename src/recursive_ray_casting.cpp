@@ -64,10 +64,10 @@ void RecursiveRayCasting::run(const Context& ctx, Features& out, Work& work) {
   std::uint64_t count = 0;
   const auto& origins = cast_.origins();
   const auto& hits = cast_.hits();
-  for (std::size_t f = 0; f < origins.size() && !work.must_stop(); ++f) {
+  for (std::size_t f = 0; f < origins.size() && !work.stopped; ++f) {
     const Point2d o = to_double(origins[f]);
     bounds.add(origins[f].x, origins[f].y);
-    for (int k = 0; k < n; ++k) {
+    for (int k = 0; k < n && !work.must_stop(); ++k) {
       const RayHit& a = hits[f * n + k];
       const RayHit& b = hits[f * n + (k + 1) % n];
       bounds.add(a.last_free.x, a.last_free.y);

@@ -534,8 +534,7 @@ Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, i
     const Mask& piece = pieces_.piece(k);
     // Each work pixel of the piece clears its s×s block of frame pixels.
     const std::size_t barrier = static_cast<std::size_t>(r.width) * r.height;
-    budget_.spend(clearing_cost(barrier));
-    if (budget_.exhausted()) {  // no work left to lay this piece out at full resolution
+    if (budget_.exhausted(clearing_cost(barrier))) {  // no work left to lay this piece out
       Features none;
       none.status =
           budget_.interrupted() ? EstimateStatus::Interrupted : EstimateStatus::OverBudget;
@@ -544,6 +543,7 @@ Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, i
                     std::to_string(k + 1) + " of the silhouette";
       return none;
     }
+    budget_.spend(clearing_cost(barrier));
     barrier_.assign(barrier, 255);
     const Rect& pr = piece.rect();
     for (int wy = 0; wy < pr.height; ++wy) {

@@ -36,6 +36,16 @@ inline std::uint64_t clearing_cost(int width, int height) {
   return width <= 0 || height <= 0 ? 0 : clearing_cost(static_cast<std::uint64_t>(width) * height);
 }
 
+// How far a width × height frame's work may pass its limit: the work between two checkpoints, at
+// most 16 rows of Canny at its costliest, one run of gap-tolerant filling across the frame with
+// its band and contour-end tests, one triangle of recursive ray-casting's area, and one search for
+// a free pixel around an inner point. (TrackResult::work <= work_limit + this; tested.)
+inline std::uint64_t overshoot_bound(int width, int height) {
+  const std::uint64_t w = static_cast<std::uint64_t>(std::max(width, 0));
+  const std::uint64_t h = static_cast<std::uint64_t>(std::max(height, 0));
+  return 16 * w * 13 + 256 * std::max(w, h) + w * h / kScannedPixelsPerCost + 2 * h + 129 * 129;
+}
+
 class WorkBudget {
  public:
   static constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
