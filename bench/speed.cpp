@@ -613,7 +613,17 @@ class StatusHarness {
     gst_buffer_unref(out);
     return us;
   }
-  void reset() { g_signal_emit_by_name(h_->element, "reset"); }
+  // Forgets the track (the element's reset signal), as a new stream would start.
+  void reset() {
+    GstIterator* it =
+        gst_bin_iterate_all_by_element_factory_name(GST_BIN(h_->element), "projtrack");
+    GValue v = G_VALUE_INIT;
+    if (gst_iterator_next(it, &v) == GST_ITERATOR_OK) {
+      g_signal_emit_by_name(g_value_get_object(&v), "reset");
+      g_value_unset(&v);
+    }
+    gst_iterator_free(it);
+  }
   const std::string& status() const { return status_; }
 
  private:

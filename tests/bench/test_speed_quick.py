@@ -64,16 +64,30 @@ for region in regions:
                and r['key'] == region]
         assert len(res) == 1 and float(res[0]['value']) > 0, (region, what)
 assert json.load(open(os.path.join(out, 'meta.json')))['measured'].endswith('UTC')
+# Bounded work at 1080p: every method's ordinary median and worst adversarial frames, the extreme
+# settings, and set_state(NULL) during a heavy frame, whose every frame ended interrupted.
+hd = '1920x1080'
+for m in methods:
+    assert find('adversarial', m, 'median_us', hd)[0] > 0, m
+    worst = [float(r['value']) for r in rows if r['section'] == 'adversarial'
+             and r['what'].startswith(m + ' ') and r['key'] == 'worst_us']
+    assert worst and min(worst) > 0, (m, worst)
+extreme = [r for r in rows if r['section'] == 'extreme' and r['key'] == 'worst_us']
+assert extreme and all(float(r['value']) > 0 for r in extreme), extreme
+trials = find('interrupt', 'set_state(NULL) during a heavy frame', 'trials', hd, 'uniform')
+assert trials and trials[0] > 0, trials
+assert find('interrupt', 'set_state(NULL) during a heavy frame', 'frames_interrupted', hd,
+            'uniform') == trials
 
 doc = os.path.join(out, 'performance.md')
 subprocess.run([sys.executable, report, out, doc], check=True, timeout=300)
 text = open(doc).read()
-for target in ['| 1 |', '| 2 |', '| 3 |', '| 4 |', '| 5 |', '| 6 |']:
+for target in ['| 1 |', '| 2 |', '| 3 |', '| 4 |', '| 5 |', '| 6 |', '| 7 |', '| 8 |', '| 9 |']:
     assert target in text, target
 assert 'nan' not in text.lower().replace('nanosec', ''), 'a NaN in the report'
 # cvtracker (target 3) needs gstreamer1.0-opencv, which only ./run bench --speed installs.
 assert 'not recorded' not in text, 'a setting the benchmark did not record'
-for target in ['| 1 |', '| 2 |', '| 4 |', '| 5 |', '| 6 |']:
+for target in ['| 1 |', '| 2 |', '| 4 |', '| 5 |', '| 6 |', '| 7 |', '| 8 |', '| 9 |']:
     line = next(ln for ln in text.splitlines() if ln.startswith(target))
     assert 'not measured' not in line, line
 assert os.path.exists(os.path.join(out, 'figures', 'cost_by_object_size.svg'))

@@ -57,6 +57,21 @@ def base_rows():
                        ('frames_tracked', 600 * n), ('messages', 600 * n), ('timeouts', 0),
                        ('timeout_s', 120), ('errors', 0)]:
             rows[('streams', g, vga, what, key)] = v
+    # Bounded work (targets 7–9): every method's ordinary median and its worst adversarial frames.
+    for m in METHODS:
+        rows[('adversarial', g, hd, m, 'median_us')] = 2000
+        for content, mode, us in [('noise', 'auto', 4000), ('dots-15', 'seeded', 5000)]:
+            rows[('adversarial', content, hd, f'{m} {mode}', 'worst_us')] = us
+            rows[('adversarial', content, hd, f'{m} {mode}', 'status_searching')] = 6
+    for setting, us in [('object-model=edges method=pixel-filling', 30000),
+                        ('method=grid-filling grid-size=1', 20000)]:
+        for content in ['generated', 'noise']:
+            rows[('extreme', content, hd, setting, 'worst_us')] = us
+            rows[('extreme', content, hd, setting, 'status_over-budget')] = 3
+    what = 'set_state(NULL) during a heavy frame'
+    for key, v in [('latency_us_median', 500), ('latency_us_max', 900), ('trials', 8),
+                   ('frames_interrupted', 8)]:
+        rows[('interrupt', 'uniform', hd, what, key)] = v
     for px, region, res in [(2000, '100x100', vga), (0, '640x480', vga)]:
         key = f'region_{region}'
         rows[('edge_region', g, res, key, 'object_px')] = px
@@ -73,12 +88,17 @@ def as_rows(rows):
             for (s, c, r, w, k), v in rows.items()]
 
 
+def all_targets(rows):
+    return (speed.targets(as_rows(rows), {}, DEFAULT, METHODS) +
+            speed.bounded_targets(as_rows(rows), METHODS))
+
+
 def verdicts(rows):
-    return {n: v for n, _, _, v in speed.targets(as_rows(rows), {}, DEFAULT, METHODS)}
+    return {n: v for n, _, _, v in all_targets(rows)}
 
 
 def measured(rows, number):
-    return next(m for n, _, m, _ in speed.targets(as_rows(rows), {}, DEFAULT, METHODS) if n == number)
+    return next(m for n, _, m, _ in all_targets(rows) if n == number)
 
 
 def changed(**edits):
@@ -104,20 +124,38 @@ KEYS = {'t1': ('ratio', g, hd, f'{E} / frame copy', 'median'),
         'timeouts8': ('streams', g, vga, '8 streams', 'timeouts'),
         'errors8': ('streams', g, vga, '8 streams', 'errors'),
         'tracked8': ('streams', g, vga, '8 streams', 'frames_tracked'),
-        'size_hd': ('size', g, hd, 'ray-casting', 'object_px_30000')}
+        'size_hd': ('size', g, hd, 'ray-casting', 'object_px_30000'),
+        'ordinary': ('adversarial', g, hd, 'pixel-filling', 'median_us'),
+        'adv_worst': ('adversarial', 'dots-15', hd, 'pixel-filling seeded', 'worst_us'),
+        'ext_worst': ('extreme', 'noise', hd, 'object-model=edges method=pixel-filling',
+                      'worst_us'),
+        'latency': ('interrupt', 'uniform', hd, 'set_state(NULL) during a heavy frame',
+                    'latency_us_max'),
+        'interrupted': ('interrupt', 'uniform', hd, 'set_state(NULL) during a heavy frame',
+                        'frames_interrupted'),
+        'trials': ('interrupt', 'uniform', hd, 'set_state(NULL) during a heavy frame',
+                   'trials')}
 
-assert verdicts(base_rows()) == {n: MET for n in range(1, 7)}, verdicts(base_rows())
+assert verdicts(base_rows()) == {n: MET for n in range(1, 10)}, verdicts(base_rows())
 # Each target flips with its data.
 for number, edit in [(1, dict(t1=12.0)), (2, dict(t2=4.0)), (3, dict(t3=1.5)),
                      (4, dict(size_hd=100 * 15 * 3)), (5, dict(lib=1)),
                      (5, dict(rss_end=50000 + 4096)), (6, dict(fps8=200)),
-                     (6, dict(timeouts8=1)), (6, dict(errors8=1))]:
+                     (6, dict(timeouts8=1)), (6, dict(errors8=1)),
+                     # 7: worse than 3× the ordinary median (still under 10 ms), or over 10 ms.
+                     (7, dict(ordinary=1500)), (7, dict(adv_worst=12000, ordinary=5000)),
+                     (8, dict(ext_worst=60000)), (9, dict(latency=60000)),
+                     (9, dict(interrupted=7))]:
     got = verdicts(changed(**edit))[number]
     assert got == NOT_MET, (number, edit, got)
 # Missing or NaN numbers never pass.
 for number, edit in [(1, dict(t1=float('nan'))), (1, dict(t1=None)), (2, dict(t2=float('nan'))),
                      (3, dict(t3=None)), (5, dict(lib=float('nan'))), (5, dict(rss_end=None)),
-                     (6, dict(fps8=float('nan'))), (6, dict(tracked8=None))]:
+                     (6, dict(fps8=float('nan'))), (6, dict(tracked8=None)),
+                     (7, dict(ordinary=None)), (7, dict(ordinary=float('nan'))),
+                     (7, dict(adv_worst=float('nan'))), (8, dict(ext_worst=float('nan'))),
+                     (9, dict(latency=None)), (9, dict(latency=float('nan'))),
+                     (9, dict(trials=None))]:
     got = verdicts(changed(**edit))[number]
     assert got == speed.MISSING, (number, edit, got)
 # Without the element's own ratios, targets 1 and 3 are not measured: never judged on the
@@ -126,6 +164,14 @@ for number, key in [(1, 't1'), (3, 't3')]:
     for v in (None, float('nan')):
         got = verdicts(changed(**{key: v}))[number]
         assert got == speed.MISSING, (number, v, got)
+# Without its rows, each of targets 7–9 is not measured.
+for number, section in [(7, 'adversarial'), (8, 'extreme'), (9, 'interrupt')]:
+    rows = {k: v for k, v in base_rows().items() if k[0] != section}
+    assert verdicts(rows)[number] == speed.MISSING, (number, verdicts(rows)[number])
+# What target 7 says names the method and the content of its worst ratio.
+assert 'at most 2.5×' in measured(base_rows(), 7), measured(base_rows(), 7)
+assert measured(changed(ordinary=1000), 7).startswith('worst ÷ ordinary median at most 5.0× '
+                                                      '(pixel-filling: 5.00 ms on dots-15, seeded')
 # No size rows: target 4 is not measured.
 no_sizes = {k: v for k, v in base_rows().items() if k[0] != 'size'}
 assert verdicts(no_sizes)[4] == speed.MISSING
@@ -163,6 +209,9 @@ assert '| 2000 px | 100×100 | 5 µs | 10 µs | 2.0× | 20 µs | 30 µs | 1.5× 
 assert 'made no allocation per frame' in text and 'are all its glue\'s' in text
 assert 'What matters is the difference, +0 KiB over 9000 frames: less than the' in text
 assert 'allocates on every call' not in text, 'a sentence no run measures'
+assert '| **gap-tolerant-filling** | 2.00 ms | 5.00 ms | dots-15, seeded | 2.5× |' in text
+assert '| `object-model=edges method=pixel-filling` | 30.00 ms | generated | over-budget 6 |' in text
+assert 'Over 8 trials it returned in 500 µs (median), 900 µs at most; 8 of the frames' in text
 text = render('undated', changed(t1=float('nan'), el_on=float('nan')), {})
 assert 'Measured at a time not recorded.' in text
 assert 'nan' not in text.lower(), 'a NaN in the report'
