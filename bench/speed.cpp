@@ -847,6 +847,47 @@ void interrupt_latency(int trials) {
   row("interrupt", c.get(), what, "frames_interrupted", interrupted);
 }
 
+// Not a time: the work each frame of ordinary content needs (TrackResult::work, a multiple of the
+// frame's pixels), with no limit, for both object models and every method (acquisition=auto, the
+// element's other defaults); and what the default budget changes there: the frames that run out,
+// and those whose outcome (status, centroid, area) differs from the unlimited run's.
+void ordinary_work(const Clip& clip) {
+  const double pixels = static_cast<double>(clip.width) * clip.height;
+  for (ObjectModelKind model : {ObjectModelKind::Appearance, ObjectModelKind::Edges}) {
+    for (Method method : kAllMethods) {
+      TrackerParams unlimited, limited;
+      unlimited.model = limited.model = model;
+      unlimited.max_work = 0;
+      Tracker a, b;
+      std::vector<double> work;
+      int over = 0, changed = 0;
+      for (std::size_t i = 0; i < clip.gray.size(); ++i) {
+        const cv::Mat& g = clip.gray[i];
+        const ImageView v(g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step));
+        const double t = static_cast<double>(i) / 30;
+        const TrackResult ra = a.track(v, EdgeParams{}, t, method, Params{}, unlimited);
+        const TrackResult rb = b.track(v, EdgeParams{}, t, method, Params{}, limited);
+        work.push_back(static_cast<double>(ra.work) / pixels);
+        over += rb.status == TrackStatus::OverBudget;
+        changed += ra.status != rb.status || ra.features.centroid.x != rb.features.centroid.x ||
+                   ra.features.centroid.y != rb.features.centroid.y ||
+                   ra.features.area != rb.features.area;
+      }
+      std::sort(work.begin(), work.end());
+      const std::string what =
+          std::string(model == ObjectModelKind::Edges ? "edges " : "appearance ") +
+          std::string(method_name(method));
+      row("ordinary_work", &clip, what, "median_x", median(work));
+      row("ordinary_work", &clip, what, "p99_x", work[work.size() * 99 / 100]);
+      row("ordinary_work", &clip, what, "max_x", work.back());
+      row("ordinary_work", &clip, what, "over_budget_frames", over);
+      row("ordinary_work", &clip, what, "changed_frames", changed);
+      row("ordinary_work", &clip, what, "frames", static_cast<double>(work.size()));
+    }
+  }
+  row("ordinary_work", &clip, "default max-work", "x", TrackerParams{}.max_work);
+}
+
 // Not a time: what each method makes of real footage with no ground truth. The tracker (as the
 // element runs it, acquisition=auto) over the real clip: frames tracked, refused as leaks, lost
 // otherwise, and searching.
@@ -961,10 +1002,14 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "projtrack-speed: %dx%d generated\n", w, h);
     auto gen = generated_clip(w, h, 0.10, frames);
     compare_with_peers(*gen, rounds, batch, have_cvtracker);
+    if (w == 640) ordinary_work(*gen);
     std::fprintf(stderr, "projtrack-speed: %dx%d real clip\n", w, h);
     if (auto real = real_clip(clip_path, w, h, quick ? 12 : 270)) {
       compare_with_peers(*real, rounds, batch, have_cvtracker);
-      if (w == 640) real_clip_statuses(*real);
+      if (w == 640) {
+        real_clip_statuses(*real);
+        ordinary_work(*real);
+      }
     } else {
       std::fprintf(stderr, "projtrack-speed: cannot read %s (opencv-doc): no real clip\n",
                    clip_path.c_str());

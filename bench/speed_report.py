@@ -419,6 +419,49 @@ def bounded_section(rows, methods, default):
     return md
 
 
+def ordinary_work_section(rows):
+    """The work ordinary frames need against the default budget, or [] when not measured."""
+    clips = []
+    for r in rows:
+        if r["section"] == "ordinary_work" and (r["clip"], r["resolution"]) not in clips:
+            clips.append((r["clip"], r["resolution"]))
+    if not clips:
+        return []
+    budget = next((r["value"] for r in rows if r["section"] == "ordinary_work"
+                   and r["what"] == "default max-work"), None)
+    md = ["## Work per frame on ordinary content\n",
+          "Not a time: the work (`TrackResult::work`, units of about one pixel of a fill: "
+          "`src/work_budget.hpp`) each frame needs with no limit, as a multiple of the frame's "
+          "pixels, for the tracker with the element's defaults and each object model and "
+          "method; then the same frames with the default budget of "
+          + (MISSING if budget is None else f"{budget:g}") + " × the frame's pixels: the frames "
+          "it cut short (`over-budget`) and those whose outcome (status, centroid, area) differs "
+          "from the unlimited run's.\n"]
+    for clip, res in clips:
+        whats = []
+        for r in rows:
+            if (r["section"], r["clip"], r["resolution"]) == ("ordinary_work", clip, res) and \
+                    r["what"] != "default max-work" and r["what"] not in whats:
+                whats.append(r["what"])
+        frames = value(rows, "ordinary_work", clip, res, whats[0], "frames") if whats else None
+        title = ("the generated clip" if clip == "generated" else
+                 "the real clip (Megamind.avi)" if clip == "real" else clip)
+        md.append(f"### {title[0].upper() + title[1:]}, {fmt_res(res)}, "
+                  f"{MISSING if frames is None else f'{frames:.0f}'} frames\n")
+        md.append("| model, method | median | 99th percentile | most | frames over budget | "
+                  "frames changed |")
+        md.append("|---|---|---|---|---|---|")
+        for w in whats:
+            v = {k: value(rows, "ordinary_work", clip, res, w, k)
+                 for k in ["median_x", "p99_x", "max_x", "over_budget_frames", "changed_frames"]}
+            cell = lambda x, f: MISSING if x is None else f.format(x)  # noqa: E731
+            md.append(f"| {w} | {cell(v['median_x'], '{:.2f}×')} | {cell(v['p99_x'], '{:.2f}×')} "
+                      f"| {cell(v['max_x'], '{:.2f}×')} | {cell(v['over_budget_frames'], '{:.0f}')} "
+                      f"| {cell(v['changed_frames'], '{:.0f}')} |")
+        md.append("")
+    return md
+
+
 def streams(rows, n):
     """The concurrent-streams run of n streams: frames tracked per second and its counts."""
     what = f"{n} stream" + ("" if n == 1 else "s")
@@ -632,6 +675,7 @@ def main():
                      f"{s1['fps']:.0f} frames tracked per second ({streams_counts(s1)})") + ".\n")
 
     md.extend(bounded_section(rows, methods, default))
+    md.extend(ordinary_work_section(rows))
 
     margin, least = meta.get("edge_margin"), meta.get("least_margin_px")
     md.append("## What makes it fast\n")

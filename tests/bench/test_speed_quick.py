@@ -72,6 +72,14 @@ for m in methods:
     worst = [float(r['value']) for r in rows if r['section'] == 'adversarial'
              and r['what'].startswith(m + ' ') and r['key'] == 'worst_us']
     assert worst and min(worst) > 0, (m, worst)
+# The work ordinary frames need, for both models and every method, at 640×480: on the generated
+# clip, and on the real one when opencv-doc is installed.
+real = any(r['section'] == 'ordinary_work' and r['clip'] == 'real' for r in rows)
+for clip in ['generated'] + (['real'] if real else []):
+    for model in ['appearance', 'edges']:
+        for m in methods:
+            assert find('ordinary_work', f'{model} {m}', 'max_x', '640x480', clip)[0] > 0, (clip, m)
+            assert find('ordinary_work', f'{model} {m}', 'frames', '640x480', clip)[0] > 0
 extreme = [r for r in rows if r['section'] == 'extreme' and r['key'] == 'worst_us']
 assert extreme and all(float(r['value']) > 0 for r in extreme), extreme
 trials = find('interrupt', 'set_state(NULL) during a heavy frame', 'trials', hd, 'uniform')

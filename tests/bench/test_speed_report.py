@@ -68,6 +68,10 @@ def base_rows():
         for content in ['generated', 'noise']:
             rows[('extreme', content, hd, setting, 'worst_us')] = us
             rows[('extreme', content, hd, setting, 'status_over-budget')] = 3
+    for key, v in [('median_x', 0.5), ('p99_x', 2.25), ('max_x', 3.0), ('over_budget_frames', 0),
+                   ('changed_frames', 0), ('frames', 60)]:
+        rows[('ordinary_work', g, vga, 'edges pixel-filling', key)] = v
+    rows[('ordinary_work', g, vga, 'default max-work', 'x')] = 8
     what = 'set_state(NULL) during a heavy frame'
     for key, v in [('latency_us_median', 500), ('latency_us_max', 900), ('trials', 8),
                    ('frames_interrupted', 8)]:
@@ -212,6 +216,9 @@ assert 'allocates on every call' not in text, 'a sentence no run measures'
 assert '| **gap-tolerant-filling** | 2.00 ms | 5.00 ms | dots-15, seeded | 2.5× |' in text
 assert '| `object-model=edges method=pixel-filling` | 30.00 ms | generated | over-budget 6 |' in text
 assert 'Over 8 trials it returned in 500 µs (median), 900 µs at most; 8 of the frames' in text
+assert 'with the default budget of 8 × the frame\'s pixels' in text
+assert '### The generated clip, 640×480, 60 frames' in text
+assert '| edges pixel-filling | 0.50× | 2.25× | 3.00× | 0 | 0 |' in text
 text = render('undated', changed(t1=float('nan'), el_on=float('nan')), {})
 assert 'Measured at a time not recorded.' in text
 assert 'nan' not in text.lower(), 'a NaN in the report'
