@@ -34,6 +34,12 @@
  * and `status=invalid-parameters` on the first frame. With `draw=true` the element draws the
  * status and why, x, y and depth, the object's outline and what the estimator did.
  *
+ * No frame can stall the pipeline: each has a budget of work (`max-work`, in passes over its
+ * pixels, counted in work and never in time) that edge detection and every estimate spend from; a
+ * frame that runs out ends with `status=over-budget` and counts as a refused one. A state change
+ * to READY or NULL, or a flush, stops a frame in progress (`status=interrupted`), so
+ * gst_element_set_state() never waits for a long frame.
+ *
  * YUV formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444) are read in place, luma and chroma;
  * YUY2 and UYVY have their chroma read in place and their luma gathered once; packed RGB is
  * converted internally. The element works in place; without `draw` it maps frames

@@ -60,8 +60,9 @@ PROJTRACK_VECTOR_CLONES void gradient_row(const std::uint8_t* __restrict__ up,
 
 // What it costs (WorkBudget units): a pixel's gradient and a quiet stretch of the suppression
 // are vectorised; a pixel above the low threshold takes the suppression's branches, which the
-// processor mispredicts on textured content (noise: ~30 ms at 1080p, 16 ns a pixel, against
-// ~1 ms for a frame of smooth shading); a candidate's hysteresis pushes and pops.
+// processor mispredicts on textured content (noise costs many times a frame of smooth shading,
+// as much as filling the frame several times over: tools/work_cost.cpp); a candidate's
+// hysteresis pushes and pops.
 constexpr std::uint64_t kCostPerStrongGradient = 12;
 constexpr std::uint64_t kCostPerCandidate = 4;
 constexpr int kRowsPerCheckpoint = 16;

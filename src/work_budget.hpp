@@ -2,8 +2,9 @@
 // to stays deterministic; and a flag that stops the work at once (a pipeline shutting down).
 //
 // The estimators count their work as they go (Work, rays.hpp) and poll the budget at coarse
-// checkpoints: per ray, per fill run, per grid line, per iteration; the tracker per seed and per
-// piece of a silhouette. Never per pixel.
+// checkpoints: per ray, per fill run, per grid line, per iteration; edge detection every 16 rows
+// of Canny and between filter passes; the tracker per seed and per piece of a silhouette. Never
+// per pixel.
 #pragma once
 
 #include <algorithm>
@@ -15,9 +16,9 @@ namespace projtrack {
 
 // The unit of work is about what one pixel of a fill costs (reading it and marking it as part of
 // a run). The other kinds of work are weighted by what each costs beside it, so that a budget of
-// units bounds the time of every method alike (measured on 1080p adversarial frames: the methods'
-// nanoseconds per unit lie within a few times of each other, where their pixels visited differ by
-// up to 25 times; docs/reliability.md):
+// units bounds the time of every method alike: tools/work_cost.cpp times every method and Canny on
+// the adversarial content at 1080p, where a unit costs each of them within a few times of the
+// others (a pixel visited costs them many times apart). Canny's own weights are in canny.cpp.
 inline constexpr std::uint64_t kCostPerRayStep = 4;      // a ray's or a walk's step: a dependent,
                                                          // branchy read, never vectorised
 inline constexpr std::uint64_t kCostPerRay = 16;         // a ray's start and end, beside its steps

@@ -14,6 +14,7 @@
 #include "estimator.hpp"
 #include "fuzz_input.hpp"
 #include "tracker.hpp"
+#include "work_budget.hpp"
 
 namespace {
 
@@ -75,6 +76,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       px[y * stride + x] = b < density ? 255 : 0;
     }
   const ImageView edges(px.data(), w, h, stride);
+  // A work budget for the estimates, from bytes already read (so the corpus keeps its meaning):
+  // none, or a small one that cuts the heavier of them short.
+  const std::uint64_t limit = p.block_size % 4 == 0
+                                  ? WorkBudget::kUnlimited
+                                  : static_cast<std::uint64_t>(density) * 64 + p.grid_size;
 
   for (Method m : kAllMethods) {
     auto est = make_estimator(m);
@@ -84,8 +90,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                               {w / 2, h / 2}};
     for (Point2i q : points) {
       Trace trace;
-      const Features f = est->estimate(edges, q, p, in.in(0, 1) ? &trace : nullptr);
+      WorkBudget budget(limit);
+      EstimateOptions options;
+      options.budget = &budget;
+      const Features f = est->estimate(edges, q, p, options, in.in(0, 1) ? &trace : nullptr);
       check_features(f, edges, m);
+      if (f.status == EstimateStatus::OverBudget) check(!f.valid(), "over budget: no features");
+      if (limit != WorkBudget::kUnlimited)
+        check(budget.spent() <= limit + overshoot_bound(w, h), "work within the budget");
     }
   }
 
@@ -101,6 +113,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(detected.empty() || (detected.width == w && detected.height == h), "edge map size");
   Tracker tracker;
   TrackerParams tp;
+  tp.max_work = p.grid_size % 3 == 0 ? 0 : p.grid_size / 10.0;  // from bytes already read
   tp.acquisition = static_cast<Acquisition>(in.in(0, 2));
   tp.strategy = static_cast<AutoAcquisition>(in.in(0, 1));
   if (in.in(0, 1)) tracker.seed({in.in(-5, 60), in.in(-5, 60)});
@@ -109,6 +122,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (in.in(0, 1)) regional.seed({in.in(-5, 60), in.in(-5, 60)});
   for (int frame = 0; frame < 3; ++frame) {
     const TrackResult r = regional.track(edges, ep, frame / 30.0, any_method(in), p, tp);
+    check(r.work <= r.work_limit || r.work - r.work_limit <= overshoot_bound(w, h),
+          "a frame's work within its budget");
     if (has_features(r.status)) {
       check(
           std::isfinite(r.features.area) && clip_to_frame(r.features.bbox, w, h) == r.features.bbox,
