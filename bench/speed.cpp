@@ -158,11 +158,16 @@ struct Contender {
 
 class Harness {
  public:
-  Harness(const std::string& launch, const std::string& caps) {
+  // `keep_status`: the status of the element's last message is kept (status()); else messages
+  // are made and posted, then dropped.
+  Harness(const std::string& launch, const std::string& caps, bool keep_status = false) {
     h_ = gst_harness_new_parse(launch.c_str());
     gst_harness_set_src_caps_str(h_, caps.c_str());
     bus_ = gst_bus_new();
-    gst_bus_set_flushing(bus_, TRUE);  // messages are made and posted, then dropped
+    if (keep_status)
+      gst_bus_set_sync_handler(bus_, status_of, &status_, nullptr);
+    else
+      gst_bus_set_flushing(bus_, TRUE);
     gst_element_set_bus(h_->element, bus_);
   }
   ~Harness() {
@@ -181,10 +186,31 @@ class Harness {
     return true;
   }
   GstElement* element() { return h_->element; }
+  // Forgets the track (the element's reset signal), as a new stream would start.
+  void reset() {
+    GstIterator* it =
+        gst_bin_iterate_all_by_element_factory_name(GST_BIN(h_->element), "projtrack");
+    GValue v = G_VALUE_INIT;
+    if (gst_iterator_next(it, &v) == GST_ITERATOR_OK) {
+      g_signal_emit_by_name(g_value_get_object(&v), "reset");
+      g_value_unset(&v);
+    }
+    gst_iterator_free(it);
+  }
+  const std::string& status() const { return status_; }
 
  private:
+  static GstBusSyncReply status_of(GstBus*, GstMessage* m, gpointer status) {
+    if (GST_MESSAGE_TYPE(m) == GST_MESSAGE_ELEMENT && gst_message_has_name(m, "projtrack")) {
+      const char* s = gst_structure_get_string(gst_message_get_structure(m), "status");
+      *static_cast<std::string*>(status) = s ? s : "";
+    }
+    gst_message_unref(m);
+    return GST_BUS_DROP;
+  }
   GstHarness* h_;
   GstBus* bus_;
+  std::string status_;
 };
 
 std::string caps_of(const char* format, const Clip& c) {
@@ -585,76 +611,23 @@ void streams_rows(const Clip& clip, int streams, int frames_each) {
 // the shared cores only ever add). The worst frame is the largest of those; an ordinary frame the
 // median of the same on the generated clip.
 
-// A harness whose element messages are kept (the last status of each frame, and how many frames
-// had each status) and then dropped.
-class StatusHarness {
- public:
-  StatusHarness(const std::string& launch, const std::string& caps) {
-    h_ = gst_harness_new_parse(launch.c_str());
-    gst_harness_set_src_caps_str(h_, caps.c_str());
-    bus_ = gst_bus_new();
-    gst_bus_set_sync_handler(bus_, keep_status, this, nullptr);
-    gst_element_set_bus(h_->element, bus_);
-  }
-  ~StatusHarness() {
-    gst_element_set_bus(h_->element, nullptr);
-    gst_object_unref(bus_);
-    gst_harness_teardown(h_);
-  }
-  StatusHarness(const StatusHarness&) = delete;
-  StatusHarness& operator=(const StatusHarness&) = delete;
-  // Pushes one frame, takes it back out, returns the microseconds it took (NaN when refused).
-  double run(GstBuffer* frame) {
-    const auto t0 = Clock::now();
-    if (gst_harness_push(h_, gst_buffer_ref(frame)) != GST_FLOW_OK) return NAN;
-    GstBuffer* out = gst_harness_pull(h_);
-    const double us = 1e6 * seconds_since(t0);
-    if (!out) return NAN;
-    gst_buffer_unref(out);
-    return us;
-  }
-  // Forgets the track (the element's reset signal), as a new stream would start.
-  void reset() {
-    GstIterator* it =
-        gst_bin_iterate_all_by_element_factory_name(GST_BIN(h_->element), "projtrack");
-    GValue v = G_VALUE_INIT;
-    if (gst_iterator_next(it, &v) == GST_ITERATOR_OK) {
-      g_signal_emit_by_name(g_value_get_object(&v), "reset");
-      g_value_unset(&v);
-    }
-    gst_iterator_free(it);
-  }
-  const std::string& status() const { return status_; }
-
- private:
-  static GstBusSyncReply keep_status(GstBus*, GstMessage* m, gpointer data) {
-    if (GST_MESSAGE_TYPE(m) == GST_MESSAGE_ELEMENT && gst_message_has_name(m, "projtrack")) {
-      const char* s = gst_structure_get_string(gst_message_get_structure(m), "status");
-      static_cast<StatusHarness*>(data)->status_ = s ? s : "";
-    }
-    gst_message_unref(m);
-    return GST_BUS_DROP;
-  }
-  GstHarness* h_;
-  GstBus* bus_;
-  std::string status_;
-};
-
 struct FrameTimes {
   std::vector<double> us;               // per frame: the least over the runs
   std::map<std::string, int> statuses;  // of the last run, frames per status
 };
 
 FrameTimes time_frames(const std::string& launch, const Clip& c, int reps) {
-  StatusHarness h(launch, caps_of("I420", c));
+  Harness h(launch, caps_of("I420", c), true);
   FrameTimes t;
   t.us.assign(c.i420.size(), HUGE_VAL);
   for (int r = 0; r < reps; ++r) {
     h.reset();
     if (r + 1 == reps) t.statuses.clear();
     for (std::size_t i = 0; i < c.i420.size(); ++i) {
-      const double us = h.run(c.i420[i]);
-      t.us[i] = std::isnan(us) ? NAN : std::min(t.us[i], us);
+      const auto t0 = Clock::now();
+      const bool ran = h.run(c.i420[i]);
+      const double us = 1e6 * seconds_since(t0);
+      t.us[i] = ran ? std::min(t.us[i], us) : NAN;
       if (r + 1 == reps) ++t.statuses[h.status()];
     }
   }

@@ -174,21 +174,17 @@ TEST(WorkBudget, AStopFlagSetBeforeAnEstimateStopsItBeforeAnyWork) {
   }
 }
 
-// How a track starts, for both object models.
-enum class Start { Point, Box, Auto, Center };
-const char* start_name(Start s) {
-  switch (s) {
-    case Start::Point:
-      return "seeded";
-    case Start::Box:
-      return "box";
-    case Start::Auto:
-      return "auto";
-    case Start::Center:
-      return "center";
-  }
-  return "?";
-}
+// How a track starts, for both object models: from a point or a box at the frame's centre, or by
+// acquisition.
+struct Start {
+  const char* name;
+  bool point, box;
+  Acquisition acquisition;
+};
+constexpr Start kStarts[] = {{"seeded", true, false, Acquisition::Auto},
+                             {"box", false, true, Acquisition::Auto},
+                             {"auto", false, false, Acquisition::Auto},
+                             {"center", false, false, Acquisition::Center}};
 
 // The adversarial set through the tracker as the element runs it (edges computed by the tracker,
 // the default budget): every method, both models, every start. Each frame's work stays within
@@ -208,23 +204,23 @@ TEST(WorkBudget, EveryFrameOfTheAdversarialSetStaysWithinTheBudget) {
   int frames = 0, over = 0, over_edges = 0;
   std::uint64_t most = 0;
   for (ObjectModelKind model : {ObjectModelKind::Edges, ObjectModelKind::Appearance}) {
-    for (Start start : {Start::Point, Start::Box, Start::Auto, Start::Center}) {
+    for (const Start& start : kStarts) {
       for (const MethodInfo& m : kMethods) {
         for (std::size_t k = 0; k < sequences.size(); ++k) {
           TrackerParams tp = defaults;
           tp.model = model;
-          tp.acquisition = start == Start::Center ? Acquisition::Center : Acquisition::Auto;
+          tp.acquisition = start.acquisition;
           // The edges model's frames run twice: the same work both times.
           const bool twice = model == ObjectModelKind::Edges;
           Tracker t, again;
           for (Tracker* tr : {&t, &again}) {
-            if (start == Start::Point) tr->seed({kW / 2, kH / 2});
-            if (start == Start::Box) tr->seed_box({kW / 3, kH / 3, kW / 3, kH / 3});
+            if (start.point) tr->seed({kW / 2, kH / 2});
+            if (start.box) tr->seed_box({kW / 3, kH / 3, kW / 3, kH / 3});
           }
           for (int i = 0; i < kFrames; ++i) {
             const std::string what =
                 std::string(model == ObjectModelKind::Edges ? "edges" : "appearance") + ", " +
-                start_name(start) + ", " + m.nick + ", " + kAdversaries[k].name + " frame " +
+                start.name + ", " + m.nick + ", " + kAdversaries[k].name + " frame " +
                 std::to_string(i);
             const ImageView g = view(sequences[k][i]);
             const TrackResult r = t.track(g, EdgeParams{}, i / 30.0, m.method, Params{}, tp);
