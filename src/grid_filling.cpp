@@ -78,7 +78,10 @@ void GridFilling::run(const Context& ctx, Features& out, Work& work) {
     for (int g = first_on_grid(s.first, anchor, m); g <= s.last; g += m) {
       const int px = item.vertical ? x : g, py = item.vertical ? g : y;
       const std::uint8_t other = item.vertical ? kAlongRow : kAlongColumn;
-      if (!(reached_.row(py)[px] & other)) pending_.push_back({{px, py}, !item.vertical});
+      if (!(reached_.row(py)[px] & other)) {
+        pending_.push_back({{px, py}, !item.vertical});
+        work.cost += kCostPerCrossing;
+      }
     }
   }
 

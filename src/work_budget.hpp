@@ -24,6 +24,8 @@ inline constexpr std::uint64_t kCostPerRayStep = 4;      // a ray's or a walk's 
 inline constexpr std::uint64_t kCostPerRay = 16;         // a ray's start and end, beside its steps
 inline constexpr std::uint64_t kCostPerRun = 16;         // a fill's run or grid line: queued,
                                                          // taken, extended, beside its pixels
+inline constexpr std::uint64_t kCostPerCrossing = 4;     // a grid line queued where a run
+                                                         // crosses it (every pixel at grid 1)
 inline constexpr std::uint64_t kCostPerColumnPixel = 4;  // a pixel of a vertical run: a row
                                                          // apart from the last, a cache line each
 inline constexpr std::uint64_t kScannedPixelsPerCost = 4;  // pixels a vectorised loop reads or
