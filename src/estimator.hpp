@@ -91,7 +91,8 @@ std::unique_ptr<Estimator> make_estimator(Method m);
 
 // The least work (WorkBudget units) one estimate of method `m` costs with `params`, however short
 // its rays: a ray method's casts of one iteration (rays + ... + rays^recursion for a method that
-// reads recursion) and the inner-point update every method makes. A budget smaller than this can never hold a whole estimate.
+// reads recursion) and the inner-point update every method makes. A budget smaller than this can
+// never hold a whole estimate.
 std::uint64_t least_estimate_cost(Method m, const Params& params);
 
 // The status of an estimate covering `bbox` in a width × height frame: Ok, ReachedBorder (it
