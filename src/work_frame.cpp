@@ -125,6 +125,17 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
       out[x] = static_cast<std::uint8_t>(count > 0 ? (sums[x] + count / 2) / count : 0);
     }
   }
+  // A dim frame read as a brighter exposure would have shown it (ColorView::exposure).
+  const Exposure& e = frame.exposure;
+  if (!e.identity()) {
+    for (int v = 0; v < 256; ++v) {
+      luma_lut_[v] = static_cast<std::uint8_t>(
+          std::clamp<long>(std::lround(e.black + (v - e.black) * e.gain), 0, 255));
+      chroma_lut_[v] = static_cast<std::uint8_t>(
+          std::clamp<long>(std::lround(128 + (v - 128) * e.gain), 0, 255));
+    }
+    for (std::size_t i = 0; i < n; ++i) luma[i] = luma_lut_[luma[i]];
+  }
   view_.luma = ImageView(luma, w, h, w);
   if (!chroma) return;
   std::uint8_t* u = luma + n;
@@ -146,6 +157,8 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
       vo[x] = c.v[row + offsets_[x]];
     }
   }
+  if (!e.identity())
+    for (std::size_t i = 0; i < 2 * n; ++i) u[i] = chroma_lut_[u[i]];  // u, then v just after
   view_.chroma = {u, v, w, 1, 0, 0};
 }
 
