@@ -223,18 +223,21 @@ struct Planes {
 //   dark    a dimmer scene: luma at kDarkLuma of its range above black, chroma at kDarkChroma
 //           of its swing
 //   warm    a warm light: luma × kWarmLuma, Cb shifted by kWarmCb, Cr by kWarmCr
+//   dim     a dim room: the light at kDimLight (luma and chroma's distance from neutral × it)
 //   bright  overexposed: luma × kBrightGain + kBrightOffset, the highlights burnt out at 255
 //   gamma   shadows lifted: luma through a gamma of kGamma (255 · (Y / 255)^kGamma)
 //   noise   sensor noise: Gaussian, σ kNoiseLuma grey levels on luma, kNoiseChroma on chroma
 //           (fixed seed)
 //   fast    every kFastStep-th frame: kFastStep times the motion between frames
 constexpr double kDarkLuma = 0.55, kDarkChroma = 0.8;
+constexpr double kDimLight = 0.4;
 constexpr double kWarmLuma = 0.92, kWarmCb = -10, kWarmCr = 12;
 constexpr double kBrightGain = 1.35, kBrightOffset = -20;
 constexpr double kGamma = 0.5;
 constexpr double kNoiseLuma = 8, kNoiseChroma = 4;
 constexpr int kFastStep = 3;
-constexpr const char* kVariants[] = {"mirror", "dark", "bright", "gamma", "warm", "noise", "fast"};
+constexpr const char* kVariants[] = {"mirror", "dark", "dim",   "bright",
+                                     "gamma",  "warm", "noise", "fast"};
 
 std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
   auto c = std::make_unique<Clip>();
@@ -261,6 +264,10 @@ std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
       p.y.convertTo(p.y, -1, kDarkLuma, 16 * (1 - kDarkLuma));
       p.u.convertTo(p.u, -1, kDarkChroma, 128 * (1 - kDarkChroma));
       p.v.convertTo(p.v, -1, kDarkChroma, 128 * (1 - kDarkChroma));
+    } else if (how == "dim") {
+      p.y.convertTo(p.y, -1, kDimLight, 0);
+      p.u.convertTo(p.u, -1, kDimLight, 128 * (1 - kDimLight));
+      p.v.convertTo(p.v, -1, kDimLight, 128 * (1 - kDimLight));
     } else if (how == "bright") {
       p.y.convertTo(p.y, -1, kBrightGain, kBrightOffset);  // saturates at 0 and 255
     } else if (how == "gamma") {
@@ -744,12 +751,13 @@ void write_meta(const std::string& dir, const std::vector<std::unique_ptr<Clip>>
        << kCamShiftHueBins << ", \"saturation_bins\": " << kCamShiftSatBins
        << ", \"saturation_min\": " << kCamShiftSatMin << ", \"value_min\": " << kCamShiftValMin
        << "},\n  \"variants\": {\"mirror\": {}, \"dark\": {\"luma\": " << kDarkLuma
-       << ", \"chroma\": " << kDarkChroma << "}, \"bright\": {\"gain\": " << kBrightGain
-       << ", \"offset\": " << kBrightOffset << "}, \"gamma\": {\"gamma\": " << kGamma
-       << "}, \"warm\": {\"luma\": " << kWarmLuma << ", \"cb\": " << kWarmCb
-       << ", \"cr\": " << kWarmCr << "}, \"noise\": {\"luma_sigma\": " << kNoiseLuma
-       << ", \"chroma_sigma\": " << kNoiseChroma << "}, \"fast\": {\"step\": " << kFastStep
-       << "}},\n  \"changed_levels\": " << kChangedLevels << ",\n  \"clips\": {";
+       << ", \"chroma\": " << kDarkChroma << "}, \"dim\": {\"light\": " << kDimLight
+       << "}, \"bright\": {\"gain\": " << kBrightGain << ", \"offset\": " << kBrightOffset
+       << "}, \"gamma\": {\"gamma\": " << kGamma << "}, \"warm\": {\"luma\": " << kWarmLuma
+       << ", \"cb\": " << kWarmCb << ", \"cr\": " << kWarmCr
+       << "}, \"noise\": {\"luma_sigma\": " << kNoiseLuma << ", \"chroma_sigma\": " << kNoiseChroma
+       << "}, \"fast\": {\"step\": " << kFastStep << "}},\n  \"changed_levels\": " << kChangedLevels
+       << ",\n  \"clips\": {";
   for (std::size_t k = 0; k < clips.size(); ++k) {
     const Clip& c = *clips[k];
     meta << (k ? "," : "") << "\n    " << json_string(c.name) << ": {\"frames\": " << c.i420.size()

@@ -573,6 +573,8 @@ def variant_text(name, v):
     texts = {
         "mirror": lambda: "left and right swapped",
         "dark": lambda: f"luma at {pct(v['luma'])} of its range, chroma at {pct(v['chroma'])}",
+        "dim": lambda: f"a dim room: the light at {pct(v['light'])} (luma, and chroma's "
+                       "distance from neutral)",
         "bright": lambda: f"luma × {v['gain']:g} {'+' if v['offset'] >= 0 else '−'} "
                           f"{abs(v['offset']):g}, highlights burnt out",
         "gamma": lambda: f"shadows lifted, luma through a gamma of {v['gamma']:g}",

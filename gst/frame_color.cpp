@@ -88,7 +88,7 @@ ColorView frame_color(const GstVideoFrame* frame, std::vector<std::uint8_t>& buf
     gather_component(static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, 0)),
                      GST_VIDEO_FRAME_COMP_PSTRIDE(frame, 0), GST_VIDEO_FRAME_COMP_STRIDE(frame, 0),
                      width, height, buffer.data(), width);
-    return {ImageView(buffer.data(), width, height, width), chroma_in_place(frame)};
+    return {ImageView(buffer.data(), width, height, width), chroma_in_place(frame), {}};
   }
   // Packed RGB: components 0, 1, 2 are R, G, B whatever their order in memory.
   const std::size_t luma = static_cast<std::size_t>(width) * height;

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "exposure.hpp"
 #include "image_view.hpp"
 
 namespace projtrack {
@@ -31,6 +32,8 @@ struct ChromaView {
 struct ColorView {
   ImageView luma;
   ChromaView chroma;  // empty for gray frames: only luma tells colours apart
+  // How the appearance model's work frames read these colours (the identity but in dim light).
+  Exposure exposure;
 
   bool has_chroma() const { return !chroma.empty(); }
 };

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "exposure.hpp"
+
 namespace projtrack {
 
 bool MotionDetector::update(const ImageView& gray, const Params& p, Motion& out) {
@@ -30,14 +32,7 @@ bool MotionDetector::update(const ImageView& gray, const Params& p, Motion& out)
       ++histogram_[v];
     }
   }
-  // The 2nd and 98th percentiles of the samples.
-  const std::uint64_t n = static_cast<std::uint64_t>(cols) * rows, tail = n / 50;
-  int lo = 0, hi = 255;
-  for (std::uint64_t below = 0; lo < 255 && below + histogram_[lo] <= tail; ++lo)
-    below += histogram_[lo];
-  for (std::uint64_t above = 0; hi > 0 && above + histogram_[hi] <= tail; --hi)
-    above += histogram_[hi];
-  spread_ = std::max(0, hi - lo);
+  spread_ = luma_range(histogram_).spread();
   width_ = gray.width;
   height_ = gray.height;
   step_ = step;

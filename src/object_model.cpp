@@ -271,6 +271,9 @@ bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion
     recentre(prior_, window);
     if (!segment(edges, prior_, m.area, hint.x >= 0 ? to_work(hint) : hint, reach, p, out))
       return false;
+    // An arm that grew out of the silhouette this frame goes now, before it is learned.
+    cut_arm(out, frame_work, hint.x >= 0 ? to_work(hint) : ops_.deepest(prior_).first, p);
+    if (moments(out).area <= 0) return false;
     // A silhouette that reaches the region's border (where it is not the frame's) was cut by
     // it: search again in a larger region.
     const Rect b = moments(out).bbox, roi = work_.rect();

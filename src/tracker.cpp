@@ -109,6 +109,7 @@ struct Tracker::Impl {
   int searched_ = 0;     // frames searched by colour since the loss
   bool seeded_ = false;  // the track started from the user's point or box
   int still_ = 0;        // frames in a row the object has not moved
+  Exposure exposure_;    // how the appearance model reads frames (TrackerParams::dim_white)
 };
 
 Tracker::Tracker() : impl_(std::make_unique<Impl>()) {}
@@ -271,7 +272,7 @@ TrackResult Tracker::Impl::track(const ColorView& frame, const EdgeParams& edge_
 TrackResult Tracker::Impl::track(const ImageView& gray, const EdgeParams& edge_params, double t,
                                  Method m, const Params& params, const TrackerParams& tp,
                                  Trace* trace) {
-  return track(ColorView{gray, {}}, edge_params, t, m, params, tp, trace);
+  return track(ColorView{gray, {}, {}}, edge_params, t, m, params, tp, trace);
 }
 
 TrackResult Tracker::Impl::track(const ColorView& frame, const ImageView& edges, double t, Method m,
@@ -282,7 +283,7 @@ TrackResult Tracker::Impl::track(const ColorView& frame, const ImageView& edges,
 
 TrackResult Tracker::Impl::track(const ImageView& gray, const ImageView& edges, double t, Method m,
                                  const Params& params, const TrackerParams& tp, Trace* trace) {
-  return track(ColorView{gray, {}}, edges, t, m, params, tp, trace);
+  return track(ColorView{gray, {}, {}}, edges, t, m, params, tp, trace);
 }
 
 TrackResult Tracker::Impl::track(const ColorView& frame, EdgeSource& edges, double t, Method m,
@@ -430,6 +431,7 @@ TrackResult Tracker::Impl::track_edges(const ColorView& frame, EdgeSource& edges
 bool Tracker::Impl::find_object(const ColorView& frame, EdgeSource& edges, const TrackerParams& tp,
                                 bool& resumed, std::string& why) {
   const int w = frame.luma.width, h = frame.luma.height;
+
   const FinderParams fp = finder_params(tp);
   Point2i seed{w / 2, h / 2};
   bool found = false;
@@ -466,19 +468,23 @@ bool Tracker::Impl::find_object(const ColorView& frame, EdgeSource& edges, const
     }
     ++searched_;
     if (object_.knows_colours()) {
-      found = finder_.from_model(frame, object_.appearance(), moved_, lost_area_, tp.leak_factor,
-                                 lost_centroid_, fp, first_, seed, why);
+      found = finder_.from_model(frame, object_.appearance(), frame.exposure, moved_, lost_area_,
+                                 tp.leak_factor, lost_centroid_, fp, first_, seed, why);
       resumed = found;
     } else {
-      found = finder_.from_motion(frame, moved_, moved_before_, fp, first_, seed, why);
+      // What moves is told from the scene by colours compared within this frame, as it is: a
+      // dim frame stretched makes the shades of the arm that waves the object look apart.
+      ColorView as_is = frame;
+      as_is.exposure = {};
+      found = finder_.from_motion(as_is, moved_, moved_before_, fp, first_, seed, why);
     }
   }
   if (!found) return false;
   const int scale = finder_.scale();
   const bool ok = resumed
                       ? object_.resume(frame, edges, first_, scale, seed, tp.object, silhouette_)
-                      : object_.start(frame, edges, first_, scale, seed, finder_.border_colours(),
-                                      tp.object, silhouette_);
+                      : object_.start(frame, edges, first_, scale, seed,
+                                      finder_.border_colours(frame, fp), tp.object, silhouette_);
   if (!ok) {
     why = "nothing of the object's colours is left around it";
     return false;
@@ -622,10 +628,17 @@ Features Tracker::Impl::estimate_on_silhouette(Method m, const Params& params, i
   return total;
 }
 
-TrackResult Tracker::Impl::track_appearance(const ColorView& frame, EdgeSource& edges, double t,
+TrackResult Tracker::Impl::track_appearance(const ColorView& raw, EdgeSource& edges, double t,
                                             Method m, const Params& params, const TrackerParams& tp,
                                             Trace* trace) {
   TrackResult r;
+  // The frame as the appearance model reads it: a dim one stretched to a normal exposure. The
+  // model's colours are learned under it, so it is measured only while no object is known and
+  // held while one is: the frame's range changes with what moves through it (a bright object
+  // that leaves a dim room), and the model follows slow changes of the light by itself.
+  if (!object_.knows_colours()) exposure_ = exposure_for(luma_range(raw.luma), tp.dim_white, tp.full_contrast);
+  ColorView frame = raw;
+  frame.exposure = exposure_;
   const int w = frame.luma.width, h = frame.luma.height;
   if (!object_.tracking()) {
     if (!inner_ && tp.acquisition == Acquisition::Manual) {

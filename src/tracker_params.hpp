@@ -72,6 +72,11 @@ struct TrackerParams {
   // levels (2nd to 98th percentile); in a dimmer one, whose changes are as much smaller, they
   // shrink in proportion, to a third at most.
   double full_contrast = 190;
+  // Appearance model: a frame whose bright end (98th percentile of luma) lies fewer than this
+  // many levels above black is dim; it is read with its luma and chroma stretched so that its
+  // bright end lies `full_contrast` levels above black, at most 3× (Exposure): colours that a dim
+  // camera squeezes together are told apart as in good light. 0: never.
+  double dim_white = 140;
   // After a loss the object is searched by its colours; after this many frames without finding
   // it, its colours are forgotten and Auto acquisition looks for any moving object.
   int forget_after = 150;

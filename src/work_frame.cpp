@@ -3,9 +3,31 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vector_clones.hpp"
+
 namespace projtrack {
 
 namespace {
+
+// col[i] += row[i] over a block row's frame columns.
+PROJTRACK_VECTOR_CLONES void add_row(const std::uint8_t* __restrict__ row,
+                                     std::uint16_t* __restrict__ col, int n) {
+  for (int i = 0; i < n; ++i) col[i] = static_cast<std::uint16_t>(col[i] + row[i]);
+}
+
+// round(n / d) for a mean of bytes (n <= 255 d) and 0 < d < 2^17, by a multiplication: exact,
+// since the reciprocal's error, under n / 2^42, stays below 1 / d (checked for every such d), and
+// n·m stays under 2^51.
+class RoundedDivision {
+ public:
+  explicit RoundedDivision(std::uint32_t d) : d_(d), m_(((std::uint64_t{1} << 42) + d - 1) / d) {}
+  std::uint32_t operator()(std::uint32_t n) const {
+    return static_cast<std::uint32_t>(((n + d_ / 2) * m_) >> 42);
+  }
+
+ private:
+  std::uint64_t d_, m_;
+};
 
 int floor_div(long long a, int b) { return static_cast<int>(a >= 0 ? a / b : -((-a + b - 1) / b)); }
 
@@ -72,17 +94,18 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
       const int span = fx1 - fx0;
       columns_.assign(static_cast<std::size_t>(span), 0);
       std::uint16_t* col = columns_.data();
-      for (int fy = fy0; fy < fy1; ++fy) {
-        const std::uint8_t* row = frame.luma.row(fy) + fx0;
-        for (int i = 0; i < span; ++i) col[i] = static_cast<std::uint16_t>(col[i] + row[i]);
-      }
+      for (int fy = fy0; fy < fy1; ++fy) add_row(frame.luma.row(fy) + fx0, col, span);
+      // A whole block's mean by a multiplication (a division per block cost more than the sums).
       const int rows = fy1 - fy0;
+      const RoundedDivision whole(static_cast<std::uint32_t>(s * rows));
       for (int x = 0; x < w; ++x) {
         const int c0 = x * s, c1 = std::min(span, c0 + s);
         std::uint32_t sum = 0;
         for (int k = c0; k < c1; ++k) sum += col[k];
         const std::uint32_t count = static_cast<std::uint32_t>(std::max(0, c1 - c0) * rows);
-        out[x] = static_cast<std::uint8_t>(count > 0 ? (sum + count / 2) / count : 0);
+        out[x] = static_cast<std::uint8_t>(c1 - c0 == s ? whole(sum)
+                                           : count > 0  ? (sum + count / 2) / count
+                                                        : 0);
       }
       continue;
     }
@@ -101,6 +124,17 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
       const int bx0 = fx0 + x * s, count = (std::min(fx1, bx0 + s) - bx0) * rows;
       out[x] = static_cast<std::uint8_t>(count > 0 ? (sums[x] + count / 2) / count : 0);
     }
+  }
+  // A dim frame read as a brighter exposure would have shown it (ColorView::exposure).
+  const Exposure& e = frame.exposure;
+  if (!e.identity()) {
+    for (int v = 0; v < 256; ++v) {
+      luma_lut_[v] = static_cast<std::uint8_t>(
+          std::clamp<long>(std::lround(e.black + (v - e.black) * e.gain), 0, 255));
+      chroma_lut_[v] = static_cast<std::uint8_t>(
+          std::clamp<long>(std::lround(128 + (v - 128) * e.gain), 0, 255));
+    }
+    for (std::size_t i = 0; i < n; ++i) luma[i] = luma_lut_[luma[i]];
   }
   view_.luma = ImageView(luma, w, h, w);
   if (!chroma) return;
@@ -123,6 +157,8 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
       vo[x] = c.v[row + offsets_[x]];
     }
   }
+  if (!e.identity())
+    for (std::size_t i = 0; i < 2 * n; ++i) u[i] = chroma_lut_[u[i]];  // u, then v just after
   view_.chroma = {u, v, w, 1, 0, 0};
 }
 

@@ -3,6 +3,7 @@
 // (a 1080p object is as cheap as a 640×480 one); only the estimator reads full resolution.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -15,7 +16,8 @@ namespace projtrack {
 class WorkFrame {
  public:
   // The work pixels of `region` (work coordinates, clipped to the frame): each luma the mean of
-  // its block, each chroma the block's centre sample.
+  // its block, each chroma the block's centre sample, both read with the frame's exposure. The
+  // view's exposure is the identity.
   void build(const ColorView& frame, int scale, const Rect& region);
   // The region's pixels: view() pixel (x, y) is work pixel (x + rect().x, y + rect().y).
   const ColorView& view() const { return view_; }
@@ -27,6 +29,7 @@ class WorkFrame {
   std::vector<std::uint32_t> sums_;      // per block of a row
   std::vector<std::uint16_t> columns_;   // per frame column of a block row: its s pixels' sum
   std::vector<std::ptrdiff_t> offsets_;  // chroma offset of each block of a row
+  std::array<std::uint8_t, 256> luma_lut_{}, chroma_lut_{};  // the frame's exposure
   ColorView view_;
   Rect rect_;
   int scale_ = 1;

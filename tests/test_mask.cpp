@@ -190,23 +190,23 @@ TEST(SilhouettePieces, ANeckSplitsTwoBlobsAndEveryPixelBelongsToOne) {
   EXPECT_EQ(moments(pieces.piece(0)).area, moments(s).area);
 }
 
-TEST(WorkFrame, BlocksAreTheMeansOfTheirPixels) {
-  std::mt19937 rng(5);
-  cv::Mat bgr(48, 64, CV_8UC3);
+// The work frame of a W × H random frame at every scale in `scales`, checked pixel by pixel.
+void expect_block_means(int W, int H, std::initializer_list<int> scales) {
+  cv::Mat bgr(H, W, CV_8UC3);
   cv::randu(bgr, cv::Scalar::all(0), cv::Scalar::all(255));
   cv::Mat i420;
   cv::cvtColor(bgr, i420, cv::COLOR_BGR2YUV_I420);
   ColorView c;
-  c.luma = ImageView(i420.data, 64, 48, 64);
-  c.chroma = {i420.data + 64 * 48, i420.data + 64 * 48 + 32 * 24, 32, 1, 1, 1};
+  c.luma = ImageView(i420.data, W, H, W);
+  c.chroma = {i420.data + W * H, i420.data + W * H + (W / 2) * (H / 2), W / 2, 1, 1, 1};
   // Regions clipped to the frame's blocks (the last ones partial unless s divides the frame),
   // and regions inside it (all blocks whole).
   for (const bool inside : {false, true})
-    for (int s : {1, 2, 3, 4, 5, 7, 8, 9, 13}) {
+    for (int s : scales) {
       WorkFrame wf;
-      const Rect blocks{0, 0, (64 + s - 1) / s, (48 + s - 1) / s};
+      const Rect blocks{0, 0, (W + s - 1) / s, (H + s - 1) / s};
       const Rect region =
-          inside ? Rect{1, 1, blocks.width - 3, blocks.height - 3} : Rect{1, 1, 100, 100};
+          inside ? Rect{1, 1, blocks.width - 3, blocks.height - 3} : Rect{1, 1, 1000, 1000};
       wf.build(c, s, region);
       const Rect expect = region & blocks;
       ASSERT_EQ(wf.rect(), expect) << s;
@@ -214,15 +214,22 @@ TEST(WorkFrame, BlocksAreTheMeansOfTheirPixels) {
         for (int x = 0; x < wf.rect().width; ++x) {
           const int fx0 = (x + 1) * s, fy0 = (y + 1) * s;
           int sum = 0, n = 0;
-          for (int fy = fy0; fy < std::min(48, fy0 + s); ++fy)
-            for (int fx = fx0; fx < std::min(64, fx0 + s); ++fx) sum += c.luma.at(fx, fy), ++n;
+          for (int fy = fy0; fy < std::min(H, fy0 + s); ++fy)
+            for (int fx = fx0; fx < std::min(W, fx0 + s); ++fx) sum += c.luma.at(fx, fy), ++n;
           ASSERT_EQ(wf.view().luma.at(x, y), (sum + n / 2) / n) << s;
-          const int cx = std::min(63, fx0 + s / 2), cy = std::min(47, fy0 + s / 2);
+          const int cx = std::min(W - 1, fx0 + s / 2), cy = std::min(H - 1, fy0 + s / 2);
           ASSERT_EQ(wf.view().chroma.u_at(x, y), c.chroma.u_at(cx, cy));
           ASSERT_EQ(wf.view().chroma.v_at(x, y), c.chroma.v_at(cx, cy));
         }
       }
     }
+}
+
+TEST(WorkFrame, BlocksAreTheMeansOfTheirPixels) {
+  expect_block_means(64, 48, {1, 2, 3, 4, 5, 7, 8, 9, 13});
+  // Large blocks, whole ones among them: their means by a multiplication, exact to the last
+  // level up to the largest scale the column sums take (257), and past it (the plain sums).
+  expect_block_means(1200, 1040, {40, 97, 257, 260});
 }
 
 }  // namespace
