@@ -27,37 +27,21 @@ void ObjectFinder::load(const ColorView& frame, const FinderParams& p) {
   work_.build(frame, s, {0, 0, (w + s - 1) / s, (h + s - 1) / s});
 }
 
-std::int64_t ObjectFinder::count_border(const ColorView& f, const FinderParams& p,
-                                        std::vector<std::uint32_t>& counts) {
+void ObjectFinder::foreground(const FinderParams& p) {
+  const ColorView& f = work_.view();
   const int w = f.luma.width, h = f.luma.height;
   const int strip = std::max(2, static_cast<int>(std::lround(p.border * std::min(w, h))));
-  counts.assign(AppearanceModel::kBins, 0);
+  border_counts_.assign(AppearanceModel::kBins, 0);
   std::int64_t strip_pixels = 0;
   for (int y = 0; y < h; ++y) {
     const bool whole_row = y < strip || y >= h - strip;
     for (int x = 0; x < w; ++x) {
       if (!whole_row && x == strip) x = std::max(strip, w - strip);  // skip the middle
       if (x >= w) break;
-      ++counts[colour_bin(f, x, y)];
+      ++border_counts_[colour_bin(f, x, y)];
       ++strip_pixels;
     }
   }
-  return strip_pixels;
-}
-
-const std::vector<std::uint32_t>& ObjectFinder::border_colours(const ColorView& frame,
-                                                               const FinderParams& p) {
-  if (frame.exposure.identity()) return border_counts_;
-  const int w = frame.luma.width, h = frame.luma.height, s = work_.scale();
-  exposed_.build(frame, s, {0, 0, (w + s - 1) / s, (h + s - 1) / s});
-  count_border(exposed_.view(), p, exposed_counts_);
-  return exposed_counts_;
-}
-
-void ObjectFinder::foreground(const FinderParams& p) {
-  const ColorView& f = work_.view();
-  const int w = f.luma.width, h = f.luma.height;
-  const std::int64_t strip_pixels = count_border(f, p, border_counts_);
   const double seen = std::max(3.0, p.border_share * static_cast<double>(strip_pixels));
   // Seen on the border in luma steps of 32, a bin with its partner: lighting varies a scene's
   // colours along luma more than the object model's fine bins, which tell a dimly lit object
@@ -301,17 +285,12 @@ bool ObjectFinder::from_motion(const ColorView& frame, const MotionDetector::Mot
 }
 
 bool ObjectFinder::from_model(const ColorView& frame, const AppearanceModel& model,
-                              const Exposure& exposure, const MotionDetector::Motion& motion,
-                              double area, double factor, Point2d near, const FinderParams& p,
-                              Mask& out, Point2i& seed, std::string& why) {
+                              const MotionDetector::Motion& motion, double area, double factor,
+                              Point2d near, const FinderParams& p, Mask& out, Point2i& seed,
+                              std::string& why) {
   load(frame, p);
   const int w = work_.rect().width, h = work_.rect().height, s = work_.scale();
-  // The model knows the object's colours as read with `exposure`.
-  ColorView exposed_frame = frame;
-  exposed_frame.exposure = exposure;
-  if (!exposure.identity()) exposed_.build(exposed_frame, s, work_.rect());
-  model.likelihood(exposure.identity() ? work_.view() : exposed_.view(), {0, 0}, {0, 0, w, h},
-                   like_);
+  model.likelihood(work_.view(), {0, 0}, {0, 0, w, h}, like_);
   candidates_.reset({0, 0, w, h});
   for (int y = 0; y < h; ++y) {
     const std::uint8_t* l = like_.data() + static_cast<std::size_t>(y) * w;

@@ -27,9 +27,6 @@ class ObjectFinder {
   // The colours of the frame's border strip on the last search from a seed or by motion:
   // counts per AppearanceModel colour bin, at scale().
   const std::vector<std::uint32_t>& border_colours() const { return border_counts_; }
-  // The same read with `frame`'s exposure (ColorView::exposure; `frame` as the last search saw
-  // it otherwise), for an object model that reads colours so.
-  const std::vector<std::uint32_t>& border_colours(const ColorView& frame, const FinderParams& p);
   // The object around `seed`: the 4-connected region of colours not seen on the frame's border
   // (a held object is in the middle of the picture; the wall, the table and the arm that holds
   // it reach the border), the nearest one when the seed's own colour is seen there, its holes
@@ -49,17 +46,12 @@ class ObjectFinder {
                    const MotionDetector::Motion& before, const FinderParams& p, Mask& out,
                    Point2i& seed, std::string& why);
   // An object seen before: of the regions whose colours the model finds object-like, the one
-  // closest in size to `area` (frame px², within `factor`) and nearest `near`, that moves; the
-  // model knows colours as read with `exposure`.
-  bool from_model(const ColorView& frame, const AppearanceModel& model, const Exposure& exposure,
+  // closest in size to `area` (frame px², within `factor`) and nearest `near`, that moves.
+  bool from_model(const ColorView& frame, const AppearanceModel& model,
                   const MotionDetector::Motion& motion, double area, double factor, Point2d near,
                   const FinderParams& p, Mask& out, Point2i& seed, std::string& why);
 
  private:
-  // Counts the colours of the border strip of `f` (a work frame) into `counts`; returns the
-  // strip's pixels.
-  static std::int64_t count_border(const ColorView& f, const FinderParams& p,
-                                   std::vector<std::uint32_t>& counts);
   // The whole frame at the finder's scale, into work_.
   void load(const ColorView& frame, const FinderParams& p);
   // The pixels whose colours are not seen on the border, into candidates_.
@@ -88,7 +80,7 @@ class ObjectFinder {
   };
   std::vector<RegionStats> stats_;
   std::vector<BoundsAccumulator> bounds_;
-  std::vector<std::uint32_t> border_counts_, exposed_counts_;
+  std::vector<std::uint32_t> border_counts_;
   std::vector<std::uint8_t> background_;  // per colour bin
   std::vector<std::uint8_t> like_;
   Mask candidates_, opened_;
@@ -100,7 +92,6 @@ class ObjectFinder {
   int scene_seen_ = 0;
   MaskOps ops_;
   WorkFrame work_;
-  WorkFrame exposed_;  // the frame read with an object model's exposure
 };
 
 }  // namespace projtrack

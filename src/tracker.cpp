@@ -468,23 +468,19 @@ bool Tracker::Impl::find_object(const ColorView& frame, EdgeSource& edges, const
     }
     ++searched_;
     if (object_.knows_colours()) {
-      found = finder_.from_model(frame, object_.appearance(), frame.exposure, moved_, lost_area_,
-                                 tp.leak_factor, lost_centroid_, fp, first_, seed, why);
+      found = finder_.from_model(frame, object_.appearance(), moved_, lost_area_, tp.leak_factor,
+                                 lost_centroid_, fp, first_, seed, why);
       resumed = found;
     } else {
-      // What moves is told from the scene by colours compared within this frame, as it is: a
-      // dim frame stretched makes the shades of the arm that waves the object look apart.
-      ColorView as_is = frame;
-      as_is.exposure = {};
-      found = finder_.from_motion(as_is, moved_, moved_before_, fp, first_, seed, why);
+      found = finder_.from_motion(frame, moved_, moved_before_, fp, first_, seed, why);
     }
   }
   if (!found) return false;
   const int scale = finder_.scale();
   const bool ok = resumed
                       ? object_.resume(frame, edges, first_, scale, seed, tp.object, silhouette_)
-                      : object_.start(frame, edges, first_, scale, seed,
-                                      finder_.border_colours(frame, fp), tp.object, silhouette_);
+                      : object_.start(frame, edges, first_, scale, seed, finder_.border_colours(),
+                                      tp.object, silhouette_);
   if (!ok) {
     why = "nothing of the object's colours is left around it";
     return false;
@@ -636,7 +632,8 @@ TrackResult Tracker::Impl::track_appearance(const ColorView& raw, EdgeSource& ed
   // model's colours are learned under it, so it is measured only while no object is known and
   // held while one is: the frame's range changes with what moves through it (a bright object
   // that leaves a dim room), and the model follows slow changes of the light by itself.
-  if (!object_.knows_colours()) exposure_ = exposure_for(luma_range(raw.luma), tp.dim_white, tp.full_contrast);
+  if (!object_.knows_colours())
+    exposure_ = exposure_for(luma_range(raw.luma), tp.dim_white, tp.full_contrast);
   ColorView frame = raw;
   frame.exposure = exposure_;
   const int w = frame.luma.width, h = frame.luma.height;
