@@ -34,9 +34,9 @@ LumaRange luma_range(const ImageView& luma, int max_samples) {
 Exposure exposure_for(const LumaRange& r, double dim, double normal, double max_gain) {
   Exposure e;
   const int black = std::min(16, r.lo), bright = r.hi - black;
-  if (!(dim > 0) || !(normal > 0) || bright <= 0 || bright >= dim) return e;
-  e.gain = std::clamp(normal / bright, 1.0, std::max(1.0, max_gain));
-  if (e.gain == 1) return {};
+  // Not dim, or nothing brighter to stretch it to (`normal` is never a darkening).
+  if (!(dim > 0) || !(normal > bright) || bright <= 0 || bright >= dim) return e;
+  e.gain = std::min(normal / bright, std::max(1.0, max_gain));
   e.black = black;
   return e;
 }

@@ -40,6 +40,12 @@ int margin_for(const MaskMoments& m, int reach, const ObjectModelParams& p) {
   return std::max(4, static_cast<int>(p.margin * std::max(m.bbox.width, m.bbox.height))) + reach;
 }
 
+// Whether box `b` reaches the border of `frame` (a silhouette along the arm that holds it).
+bool reaches_border(const Rect& b, const Rect& frame) {
+  return !b.empty() && (b.x <= frame.x || b.y <= frame.y || b.right() >= frame.right() ||
+                        b.bottom() >= frame.bottom());
+}
+
 }  // namespace
 
 void ObjectModel::reset() {
@@ -139,9 +145,7 @@ void ObjectModel::take_unknown_inside(Point2i seed, Mask& s) {
 void ObjectModel::cut_arm(Mask& s, const Rect& frame, Point2i seed, const ObjectModelParams& p) {
   const MaskMoments m = moments(s);
   const Rect& b = m.bbox;
-  if (!(p.arm_cut > 0) || b.empty() ||
-      (b.x > frame.x && b.y > frame.y && b.right() < frame.right() && b.bottom() < frame.bottom()))
-    return;
+  if (!(p.arm_cut > 0) || !reaches_border(b, frame)) return;
   const int r = at_least(p.arm_cut, m.area, 1);
   ops_.erode(s, r, hull_);
   if (moments(hull_).area <= 0) return;  // all of it thin: nothing to tell the arm by
@@ -271,12 +275,17 @@ bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion
     recentre(prior_, window);
     if (!segment(edges, prior_, m.area, hint.x >= 0 ? to_work(hint) : hint, reach, p, out))
       return false;
-    // An arm that grew out of the silhouette this frame goes now, before it is learned.
-    cut_arm(out, frame_work, hint.x >= 0 ? to_work(hint) : ops_.deepest(prior_).first, p);
-    if (moments(out).area <= 0) return false;
+    // An arm that grew out of the silhouette to the frame's border this frame goes now, before
+    // it is learned (the deepest point of the prior, a distance transform, only then).
+    MaskMoments om = moments(out);
+    if (reaches_border(om.bbox, frame_work)) {
+      cut_arm(out, frame_work, hint.x >= 0 ? to_work(hint) : ops_.deepest(prior_).first, p);
+      om = moments(out);
+    }
+    if (om.area <= 0) return false;
     // A silhouette that reaches the region's border (where it is not the frame's) was cut by
     // it: search again in a larger region.
-    const Rect b = moments(out).bbox, roi = work_.rect();
+    const Rect b = om.bbox, roi = work_.rect();
     const bool cut = (b.x == roi.x && roi.x > 0) || (b.y == roi.y && roi.y > 0) ||
                      (b.right() == roi.right() && roi.right() < frame_work.width) ||
                      (b.bottom() == roi.bottom() && roi.bottom() < frame_work.height);

@@ -431,7 +431,6 @@ TrackResult Tracker::Impl::track_edges(const ColorView& frame, EdgeSource& edges
 bool Tracker::Impl::find_object(const ColorView& frame, EdgeSource& edges, const TrackerParams& tp,
                                 bool& resumed, std::string& why) {
   const int w = frame.luma.width, h = frame.luma.height;
-
   const FinderParams fp = finder_params(tp);
   Point2i seed{w / 2, h / 2};
   bool found = false;

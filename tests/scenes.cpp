@@ -78,4 +78,18 @@ std::vector<Point2i> interior_points(const Scene& s, int step) {
   return points;
 }
 
+cv::Mat random_i420(int w, int h, int max) {
+  cv::Mat bgr(h, w, CV_8UC3), i420;
+  cv::randu(bgr, cv::Scalar::all(0), cv::Scalar::all(max));
+  cv::cvtColor(bgr, i420, cv::COLOR_BGR2YUV_I420);
+  return i420;
+}
+
+ColorView i420_view(const cv::Mat& i420, int w, int h) {
+  ColorView c;
+  c.luma = ImageView(i420.data, w, h, w);
+  c.chroma = {i420.data + w * h, i420.data + w * h + (w / 2) * (h / 2), w / 2, 1, 1, 1};
+  return c;
+}
+
 }  // namespace projtrack::test

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "color_view.hpp"
 #include "geometry.hpp"
 #include "image_view.hpp"
 
@@ -38,5 +39,11 @@ Point2i open_gap_right(Scene& s, int x_start, int y);
 
 // Interior pixels on a regular lattice of the given step (seeds to start estimates from).
 std::vector<Point2i> interior_points(const Scene& s, int step);
+
+// A `w` × `h` frame of random BGR colours (channels in [0, max)) converted to I420.
+cv::Mat random_i420(int w, int h, int max);
+
+// The colour view of a contiguous I420 frame of `w` × `h` (as cv::cvtColor writes it).
+ColorView i420_view(const cv::Mat& i420, int w, int h);
 
 }  // namespace projtrack::test

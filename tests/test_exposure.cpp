@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "exposure.hpp"
+#include "scenes.hpp"
 #include "work_frame.hpp"
 
 namespace projtrack {
@@ -41,13 +42,8 @@ TEST(Exposure, ADimFrameIsStretchedToFullLightAndABrightOneLeftAsItIs) {
 
 TEST(Exposure, WorkFramesReadColoursWithTheFramesExposure) {
   const int w = 64, h = 48;
-  cv::Mat bgr(h, w, CV_8UC3);
-  cv::randu(bgr, cv::Scalar::all(0), cv::Scalar::all(90));
-  cv::Mat i420;
-  cv::cvtColor(bgr, i420, cv::COLOR_BGR2YUV_I420);
-  ColorView c;
-  c.luma = ImageView(i420.data, w, h, w);
-  c.chroma = {i420.data + w * h, i420.data + w * h + (w / 2) * (h / 2), w / 2, 1, 1, 1};
+  const cv::Mat i420 = test::random_i420(w, h, 90);
+  ColorView c = test::i420_view(i420, w, h);
   WorkFrame plain, exposed;
   plain.build(c, 2, {0, 0, w / 2, h / 2});
   c.exposure = {2.5, 10};

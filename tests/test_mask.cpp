@@ -8,6 +8,7 @@
 
 #include "mask.hpp"
 #include "region_labels.hpp"
+#include "scenes.hpp"
 #include "silhouette_pieces.hpp"
 #include "work_frame.hpp"
 
@@ -192,13 +193,8 @@ TEST(SilhouettePieces, ANeckSplitsTwoBlobsAndEveryPixelBelongsToOne) {
 
 // The work frame of a W × H random frame at every scale in `scales`, checked pixel by pixel.
 void expect_block_means(int W, int H, std::initializer_list<int> scales) {
-  cv::Mat bgr(H, W, CV_8UC3);
-  cv::randu(bgr, cv::Scalar::all(0), cv::Scalar::all(255));
-  cv::Mat i420;
-  cv::cvtColor(bgr, i420, cv::COLOR_BGR2YUV_I420);
-  ColorView c;
-  c.luma = ImageView(i420.data, W, H, W);
-  c.chroma = {i420.data + W * H, i420.data + W * H + (W / 2) * (H / 2), W / 2, 1, 1, 1};
+  const cv::Mat i420 = test::random_i420(W, H, 255);
+  const ColorView c = test::i420_view(i420, W, H);
   // Regions clipped to the frame's blocks (the last ones partial unless s divides the frame),
   // and regions inside it (all blocks whole).
   for (const bool inside : {false, true})

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "object_model.hpp"
+#include "scenes.hpp"
 #include "tracker.hpp"
 
 namespace projtrack {
@@ -32,13 +33,7 @@ struct Frame {
   cv::Mat truth;  // CV_8U, 1 on the object's visible pixels
   double area = 0;
   Point2d centroid;
-  ColorView view() const {
-    const int w = truth.cols, h = truth.rows;
-    ColorView c;
-    c.luma = ImageView(i420.data, w, h, w);
-    c.chroma = {i420.data + w * h, i420.data + w * h + (w / 2) * (h / 2), w / 2, 1, 1, 1};
-    return c;
-  }
+  ColorView view() const { return test::i420_view(i420, truth.cols, truth.rows); }
 };
 
 Frame render(const Scene& s) {
