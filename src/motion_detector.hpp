@@ -20,7 +20,7 @@ class MotionDetector {
   struct Motion {
     double fraction = 0;          // of the sampled pixels that changed
     Point2d centroid;             // of the changed samples (valid when fraction > 0)
-    std::vector<Point2i> points;  // the changed samples, in frame coordinates
+    std::vector<Point2i> points;  // the changed samples, in frame coordinates, row by row
     int step = 1;                 // the samples' spacing, px (Params::step)
   };
 
@@ -36,6 +36,7 @@ class MotionDetector {
   std::vector<std::uint8_t> previous_;  // the sampled previous frame
   int width_ = 0, height_ = 0, step_ = 0, spread_ = 0;
   std::array<std::uint32_t, 256> histogram_{};
+  std::vector<int> changed_;  // one row's changed columns (update)
 };
 
 }  // namespace projtrack

@@ -60,24 +60,47 @@ void ObjectFinder::foreground(const FinderParams& p) {
   ops_.dilate(opened_, 1, candidates_);
 }
 
-void ObjectFinder::count_motion(const MotionDetector::Motion& motion, MotionCounts& out) const {
+void ObjectFinder::count_motion(const MotionDetector::Motion& motion, const Rect& area,
+                                MotionCounts& out) {
   out.inside.assign(static_cast<std::size_t>(regions_.count()) + 1, 0);
   out.near.assign(out.inside.size(), 0);
   const int s = work_.scale(), w = regions_.width(), h = regions_.height();
   out.per_sample = static_cast<double>(motion.step) * motion.step / (static_cast<double>(s) * s);
-  for (const Point2i& q : motion.points) {
-    const int x = q.x / s, y = q.y / s;
-    if (x >= w || y >= h) continue;
-    out.inside[regions_.row(y)[x]] += 1;
-    // Each region within one work pixel counts the sample once.
-    std::int32_t seen[9];
-    int n = 0;
-    for (int yy = std::max(0, y - 1); yy <= std::min(h - 1, y + 1); ++yy)
-      for (int xx = std::max(0, x - 1); xx <= std::min(w - 1, x + 1); ++xx) {
-        const std::int32_t l = regions_.row(yy)[xx];
-        if (l && std::find(seen, seen + n, l) == seen + n) seen[n++] = l;
-      }
-    for (int k = 0; k < n; ++k) out.near[seen[k]] += 1;
+  const Rect a = area & Rect{0, 0, w, h};
+  if (a.empty()) return;
+  samples_.assign(static_cast<std::size_t>(a.width) * a.height, 0);
+  // The samples come in row order: those above the area are passed over by a binary search, the
+  // work row is found once per frame row and the work column by a table (no division per sample).
+  const int x0 = a.x * s, x1 = a.right() * s, y0 = a.y * s, y1 = a.bottom() * s;
+  work_column_.resize(static_cast<std::size_t>(x1 - x0));
+  for (int x = x0; x < x1; ++x) work_column_[x - x0] = x / s - a.x;
+  auto q = std::lower_bound(motion.points.begin(), motion.points.end(), y0,
+                            [](const Point2i& p, int y) { return p.y < y; });
+  int row_y = -1;
+  std::int32_t* row = nullptr;
+  for (; q != motion.points.end() && q->y < y1; ++q) {
+    if (q->y != row_y) {
+      row_y = q->y;
+      row = samples_.data() + static_cast<std::size_t>(q->y / s - a.y) * a.width;
+    }
+    if (q->x >= x0 && q->x < x1) ++row[work_column_[q->x - x0]];
+  }
+  for (int y = a.y; y < a.bottom(); ++y) {
+    const std::int32_t* n_row = samples_.data() + static_cast<std::size_t>(y - a.y) * a.width;
+    for (int x = a.x; x < a.right(); ++x) {
+      const std::int32_t n = n_row[x - a.x];
+      if (!n) continue;
+      out.inside[regions_.row(y)[x]] += n;
+      // Each region within one work pixel counts the samples once.
+      std::int32_t seen[9];
+      int k = 0;
+      for (int yy = std::max(0, y - 1); yy <= std::min(h - 1, y + 1); ++yy)
+        for (int xx = std::max(0, x - 1); xx <= std::min(w - 1, x + 1); ++xx) {
+          const std::int32_t l = regions_.row(yy)[xx];
+          if (l && std::find(seen, seen + k, l) == seen + k) seen[k++] = l;
+        }
+      for (int i = 0; i < k; ++i) out.near[seen[i]] += n;
+    }
   }
 }
 
@@ -139,8 +162,7 @@ double ObjectFinder::foreground_share(const ColorView& frame, const Mask& s, int
   return foreground_share(s, scale, p);
 }
 
-template <class Score>
-int ObjectFinder::best_region(Score&& score) {
+void ObjectFinder::measure_regions() {
   stats_.assign(static_cast<std::size_t>(regions_.count()) + 1, {});
   bounds_.assign(stats_.size(), {});
   for (int y = 0; y < regions_.height(); ++y) {
@@ -157,10 +179,24 @@ int ObjectFinder::best_region(Score&& score) {
       bounds_[l[x]].add(x, y);
     }
   }
+  for (int l = 1; l <= regions_.count(); ++l) stats_[l].box = bounds_[l].rect();
+}
+
+template <class Keep>
+Rect ObjectFinder::area_of(Keep&& keep) const {
+  Rect area;
+  for (int l = 1; l <= regions_.count(); ++l) {
+    const Rect& b = stats_[l].box;
+    if (keep(l, stats_[l])) area |= Rect{b.x - 1, b.y - 1, b.width + 2, b.height + 2};
+  }
+  return area;
+}
+
+template <class Score>
+int ObjectFinder::best_region(Score&& score) const {
   int best = 0;
   double best_score = -1;
   for (int l = 1; l <= regions_.count(); ++l) {
-    stats_[l].box = bounds_[l].rect();
     const double s = score(l, stats_[l]);
     if (s > best_score) best_score = s, best = l;
   }
@@ -260,21 +296,27 @@ bool ObjectFinder::from_motion(const ColorView& frame, const MotionDetector::Mot
   const int w = candidates_.rect().width, h = candidates_.rect().height;
   const double frame_area = static_cast<double>(w) * h;
   regions_.label(candidates_.view(), false);
-  count_motion(motion, moving_);
   count_foreground(p);
-  const int label = best_region([&](int l, const RegionStats& r) {
+  measure_regions();
+  // Size, the border and the background first: motion is counted only around what passes them.
+  const auto may_be = [&](int l, const RegionStats& r) {
     const Rect& b = r.box;
     const double size = static_cast<double>(r.size);
-    if (size < p.min_area * frame_area || size > p.max_area * frame_area) return -1.0;
-    if (b.x == 0 || b.y == 0 || b.right() == w || b.bottom() == h) return -1.0;
-    if (!moves(l, moving_, p) || foreground_[l] < p.min_foreground * size) return -1.0;
-    return moving_.inside[l] * moving_.per_sample / (static_cast<double>(b.width) * b.height);
+    return size >= p.min_area * frame_area && size <= p.max_area * frame_area && b.x > 0 &&
+           b.y > 0 && b.right() < w && b.bottom() < h && foreground_[l] >= p.min_foreground * size;
+  };
+  count_motion(motion, area_of(may_be), moving_);
+  const int label = best_region([&](int l, const RegionStats& r) {
+    if (!may_be(l, r) || !moves(l, moving_, p)) return -1.0;
+    return moving_.inside[l] * moving_.per_sample /
+           (static_cast<double>(r.box.width) * r.box.height);
   });
   if (!label) {
     why = "no moving region of its own colours, wholly in view";
     return false;
   }
-  count_motion(before, moving_before_);
+  count_motion(before, area_of([&](int l, const RegionStats&) { return l == label; }),
+               moving_before_);
   if (!moves(label, moving_before_, p, 0.5)) {
     why = "what moves there did not move on the last frame: waiting";
     return false;
@@ -300,15 +342,19 @@ bool ObjectFinder::from_model(const ColorView& frame, const AppearanceModel& mod
   ops_.erode(candidates_, 1, opened_);
   ops_.dilate(opened_, 1, candidates_);
   regions_.label(candidates_.view(), false);
-  count_motion(motion, moving_);
   count_foreground(p);
+  measure_regions();
   const double work_area = area / (static_cast<double>(s) * s);
   const double diagonal = std::hypot(w, h);
   const Point2d near_work{near.x / s, near.y / s};
-  const int label = best_region([&](int l, const RegionStats& r) {
+  const auto may_be = [&](int l, const RegionStats& r) {
     const double size = static_cast<double>(r.size);
-    if (size < work_area / factor || size > work_area * factor) return -1.0;
-    if (!moves(l, moving_, p) || foreground_[l] < p.min_foreground * size) return -1.0;
+    return size >= work_area / factor && size <= work_area * factor &&
+           foreground_[l] >= p.min_foreground * size;
+  };
+  count_motion(motion, area_of(may_be), moving_);
+  const int label = best_region([&](int l, const RegionStats& r) {
+    if (!may_be(l, r) || !moves(l, moving_, p)) return -1.0;
     const Point2d c{r.box.x + r.box.width / 2.0, r.box.y + r.box.height / 2.0};
     return 1.0 - distance(c, near_work) / diagonal;  // nearest first
   });

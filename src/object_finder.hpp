@@ -61,16 +61,26 @@ class ObjectFinder {
     std::vector<std::int64_t> inside, near;
     double per_sample = 0;  // the work pixels a sample stands for
   };
-  void count_motion(const MotionDetector::Motion& motion, MotionCounts& out) const;
+  // Counted only within `area` (work pixels): the counts are those of every region whose box,
+  // grown by one pixel, lies in it. The samples are first counted per work pixel, so that the
+  // regions are looked up once per work pixel that moved, not once per sample (a frame of fresh
+  // noise moves almost every sample).
+  void count_motion(const MotionDetector::Motion& motion, const Rect& area, MotionCounts& out);
   // Whether region `l` (of `stats_`, see best_region) moved by FinderParams::min_moving or
   // min_moving_outline, times `share`.
   bool moves(int l, const MotionCounts& m, const FinderParams& p, double share = 1) const;
   // Updates the background with the loaded frame; then, per labelled region, its pixels that
   // differ from the background (all of them while the background is not yet known).
   void count_foreground(const FinderParams& p);
-  // Picks the best labelled region of candidates_ by `score` (higher is better, < 0 refused).
+  // The size, outline and box of every labelled region of candidates_, into stats_.
+  void measure_regions();
+  // The union of the boxes, grown by one pixel, of the regions `keep` accepts: where motion is
+  // worth counting (a region that fails the other tests first needs none).
+  template <class Keep>
+  Rect area_of(Keep&& keep) const;
+  // Picks the best measured region by `score` (higher is better, < 0 refused); 0 for none.
   template <class Score>
-  int best_region(Score&& score);
+  int best_region(Score&& score) const;
   void copy_region(int label, Mask& out);
 
   struct RegionStats {
@@ -86,6 +96,8 @@ class ObjectFinder {
   Mask candidates_, opened_;
   RegionLabels regions_;
   MotionCounts moving_, moving_before_;
+  std::vector<std::int32_t> samples_;      // motion samples per work pixel (count_motion)
+  std::vector<std::int32_t> work_column_;  // a frame column's work column (count_motion)
   std::vector<std::int64_t> foreground_;
   std::vector<float> scene_;  // the background: running mean luma, at the finder's scale
   Rect scene_rect_;
