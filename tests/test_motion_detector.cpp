@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
+#include <random>
 #include <vector>
 
 #include "motion_detector.hpp"
@@ -34,6 +36,35 @@ TEST(MotionDetector, TheChangedSamplesAfterTheFirstFrame) {
   strict.threshold = 50;
   ASSERT_TRUE(d.update(a.view(), strict, m));
   EXPECT_TRUE(m.points.empty());
+}
+
+// Noise changes every other sample at random (what the detector lists without branching on it),
+// on odd sizes and steps: the samples are those a plain reading finds, row by row (the finder
+// relies on the order), with the fraction and centroid they give.
+TEST(MotionDetector, OnNoiseTheChangedSamplesAreThoseAPlainReadingFindsRowByRow) {
+  std::mt19937 rng(7);
+  for (const int step : {1, 3, 4}) {
+    Gray a(61, 47, 0), b = a;
+    for (auto* g : {&a, &b})
+      for (auto& v : g->pixels) v = static_cast<std::uint8_t>(rng() % 256);
+    MotionDetector::Params p;
+    p.step = step;
+    MotionDetector d;
+    MotionDetector::Motion m;
+    d.update(a.view(), p, m);
+    ASSERT_TRUE(d.update(b.view(), p, m));
+    std::vector<Point2i> expect;
+    for (int y = 0; y < a.height; y += step)
+      for (int x = 0; x < a.width; x += step)
+        if (std::abs(b.at(x, y) - a.at(x, y)) > p.threshold) expect.push_back({x, y});
+    ASSERT_EQ(m.points, expect) << "step " << step;
+    const int samples = ((a.width + step - 1) / step) * ((a.height + step - 1) / step);
+    EXPECT_DOUBLE_EQ(m.fraction, static_cast<double>(expect.size()) / samples);
+    double sx = 0, sy = 0;
+    for (const Point2i& q : expect) sx += q.x, sy += q.y;
+    EXPECT_NEAR(m.centroid.x, sx / expect.size(), 1e-9);
+    EXPECT_NEAR(m.centroid.y, sy / expect.size(), 1e-9);
+  }
 }
 
 TEST(MotionDetector, TheSpreadOfTheSceneFromThe2ndToThe98thPercentile) {
