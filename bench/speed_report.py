@@ -696,6 +696,11 @@ def main():
               f"{speed_phrase([c[5] for c in edges if c[0] == 0])} (Canny).\n"
               "- **Leaks stop early.** The fills stop once the area passes what the tracker would "
               "refuse, so a leak through a gap costs about the object's size, not the frame's.\n"
+              "- **A search reads the frame a fixed number of times.** While no object is "
+              "tracked, the finder reads the whole frame at a coarse scale, and counts motion "
+              "only around the regions that pass its size, border and background tests, per "
+              "coarse pixel rather than per changed sample: a frame where everything moves "
+              "(noise, a checkerboard that inverts) is the adversarial set's worst frame above.\n"
               "- **Nothing is cleared or allocated per frame beyond what was touched**: masks are "
               "cleared only in the box the fill wrote.\n")
 
