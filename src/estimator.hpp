@@ -15,6 +15,8 @@
 
 namespace projtrack {
 
+class ScratchMask;  // scratch_mask.hpp (internal: the fills' own masks)
+
 // An estimator keeps scratch buffers between calls (so steady-state calls do not allocate): use
 // one instance per stream, from one thread at a time.
 class Estimator {
@@ -33,6 +35,15 @@ class Estimator {
   }
   Features estimate(const ImageView& edges, Point2i inner_point, const Params& params,
                     const EstimateOptions& options, Trace* trace = nullptr);
+  // Whether the last estimate's fill took in pixel `p` (of the edges it was given), so that an
+  // estimate from `p` on the same edges would find the same region and the same verdict: true
+  // only for pixel filling, whose region is the 4-connected free pixels around its start (when
+  // cut short by the area limit, from `p` it would be cut short too). The methods whose answer
+  // depends on where they start say false.
+  virtual bool took_in(Point2i) const { return false; }
+  // Sets in `into` (of the edges' size) the pixels the last estimate's fill took in, when
+  // took_in() answers for them; widens `box` to hold them.
+  virtual void add_fill_to(ScratchMask&, Rect&) const {}
 
  protected:
   struct Context {

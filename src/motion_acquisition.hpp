@@ -7,6 +7,7 @@
 
 #include "estimator.hpp"
 #include "motion_detector.hpp"
+#include "scratch_mask.hpp"
 #include "tracker_params.hpp"
 #include "work_budget.hpp"
 
@@ -27,6 +28,10 @@ class MotionAcquisition {
 
  private:
   MotionDetector motion_;
+  // This frame's pixels of fills cut short by the area limit (regions too large to be the object):
+  // a seed in one is not tried. All zero out of `too_large_box_` between frames.
+  ScratchMask too_large_;
+  Rect too_large_box_;
   MotionDetector::Motion moved_;
   Acquisition last_mode_ = Acquisition::Auto;
 };

@@ -8,15 +8,16 @@ void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
   const ImageView& edges = ctx.edges;
   const int width = edges.width, height = edges.height;
   filled_.ensure(width, height);
+  filled_.clear(kept_ & Rect{0, 0, width, height});  // the last fill, paid for by its estimate
   pending_.clear();
   pending_.push_back(out.seed);
   std::uint64_t count = 0, sum_x = 0, sum_y = 0;
   BoundsAccumulator bounds;
   const double limit = ctx.options.area_limit > 0 ? ctx.options.area_limit : HUGE_VAL;
 
-  while (!pending_.empty() && static_cast<double>(count) <= limit && !work.must_stop()) {
-    const Point2i s = pending_.back();
-    pending_.pop_back();
+  std::size_t next = 0;
+  while (next < pending_.size() && static_cast<double>(count) <= limit && !work.must_stop()) {
+    const Point2i s = pending_[next++];
     const std::uint8_t* e = edges.row(s.y);
     std::uint8_t* f = filled_.row(s.y);
     work.fill(1);
@@ -53,8 +54,19 @@ void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
   out.bbox = bounds.rect();
   out.iterations = 1;
   if (ctx.trace) ctx.trace->iterations.push_back({out.seed, out.centroid, out.area});
-  filled_.clear(out.bbox);
+  // Kept for took_in() until the next fill clears it; its clearing counted now, so that what an
+  // estimate costs does not depend on the one before.
+  kept_ = out.bbox;
   work.cost += clearing_cost(out.bbox.width, out.bbox.height);
+}
+
+void PixelFilling::add_fill_to(ScratchMask& into, Rect& box) const {
+  for (int y = kept_.y; y < kept_.bottom(); ++y) {
+    const std::uint8_t* f = filled_.row(y);
+    std::uint8_t* o = into.row(y);
+    for (int x = kept_.x; x < kept_.right(); ++x) o[x] |= f[x];
+  }
+  box |= kept_;
 }
 
 template <>

@@ -21,7 +21,15 @@ class ScratchMask {
     data_.assign(static_cast<std::size_t>(width) * height, 0);
   }
   std::uint8_t* row(int y) { return data_.data() + static_cast<std::size_t>(y) * width_; }
+  const std::uint8_t* row(int y) const {
+    return data_.data() + static_cast<std::size_t>(y) * width_;
+  }
   int stride() const { return width_; }
+  // Whether pixel `p` is set (false outside the mask).
+  bool at(Point2i p) const {
+    return p.x >= 0 && p.y >= 0 && p.x < width_ && p.y < height_ &&
+           data_[static_cast<std::size_t>(p.y) * width_ + p.x];
+  }
   void clear(const Rect& r) {
     for (int y = r.y; y < r.bottom(); ++y) std::memset(row(y) + r.x, 0, r.width);
   }
