@@ -42,8 +42,8 @@ class Estimator {
   // depends on where they start say false.
   virtual bool took_in(Point2i) const { return false; }
   // Sets in `into` (of the edges' size) the pixels the last estimate's fill took in, when
-  // took_in() answers for them; widens `box` to hold them.
-  virtual void add_fill_to(ScratchMask&, Rect&) const {}
+  // took_in() answers for them; widens `box` to hold them. Returns the work it did (units).
+  virtual std::uint64_t add_fill_to(ScratchMask&, Rect&) const { return 0; }
 
  protected:
   struct Context {

@@ -72,19 +72,18 @@ std::optional<Features> MotionAcquisition::acquire(const ImageView& gray, const 
     // took in, or in one too large to be the object (the background the seeds before leaked
     // into, as a rule): the same verdict again.
     const std::optional<Point2i> start = nearest_free_pixel(edges, c, params.seed_radius);
-    if (start != c) {  // the square searched for it (as the estimate counts it)
-      const std::uint64_t side = 2 * static_cast<std::uint64_t>(params.seed_radius) + 1;
-      budget.spend(side * side);
+    if (start && ((estimated && est.took_in(*start)) || too_large_.at(*start))) {
+      if (*start != c) {  // the square searched for it, as an estimate counts it
+        const std::uint64_t side = 2 * static_cast<std::uint64_t>(params.seed_radius) + 1;
+        budget.spend(side * side);
+      }
+      continue;
     }
-    if (start && ((estimated && est.took_in(*start)) || too_large_.at(*start))) continue;
     estimated = true;
     Features f = est.estimate(edges, c, params, options);
     tried += f.status != EstimateStatus::OverBudget && f.status != EstimateStatus::Interrupted;
-    if (limit > 0 && f.area > limit) {  // cut short by the limit: a region too large
-      est.add_fill_to(too_large_, too_large_box_);
-      budget.spend(static_cast<std::uint64_t>(f.bbox.width) * f.bbox.height /
-                   kScannedPixelsPerCost);
-    }
+    if (limit > 0 && f.area > limit)  // cut short by the limit: a region too large
+      budget.spend(est.add_fill_to(too_large_, too_large_box_));
     if (!implausible(f, edges.width, edges.height, tp).empty()) continue;
     // A sliver between two edges (seen on real footage: a 2×23 px strip) is not an object.
     if (std::min(f.bbox.width, f.bbox.height) < tp.min_acquired_side) continue;

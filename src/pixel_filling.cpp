@@ -60,13 +60,14 @@ void PixelFilling::run(const Context& ctx, Features& out, Work& work) {
   work.cost += clearing_cost(out.bbox.width, out.bbox.height);
 }
 
-void PixelFilling::add_fill_to(ScratchMask& into, Rect& box) const {
+std::uint64_t PixelFilling::add_fill_to(ScratchMask& into, Rect& box) const {
   for (int y = kept_.y; y < kept_.bottom(); ++y) {
     const std::uint8_t* f = filled_.row(y);
     std::uint8_t* o = into.row(y);
     for (int x = kept_.x; x < kept_.right(); ++x) o[x] |= f[x];
   }
   box |= kept_;
+  return static_cast<std::uint64_t>(kept_.width) * kept_.height / kScannedPixelsPerCost;
 }
 
 template <>

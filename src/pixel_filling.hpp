@@ -14,7 +14,7 @@ namespace projtrack {
 class PixelFilling final : public Estimator {
  public:
   bool took_in(Point2i p) const override { return filled_.at(p); }
-  void add_fill_to(ScratchMask& into, Rect& box) const override;
+  std::uint64_t add_fill_to(ScratchMask& into, Rect& box) const override;
 
  protected:
   void run(const Context& ctx, Features& out, Work& work) override;
