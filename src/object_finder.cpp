@@ -203,6 +203,20 @@ int ObjectFinder::best_region(Score&& score) const {
   return best_score >= 0 ? best : 0;
 }
 
+int ObjectFinder::enclosing_region(Point2i p, int inner, double least) {
+  measure_regions();
+  int best = 0;
+  for (int l = 1; l <= regions_.count(); ++l) {
+    const RegionStats& r = stats_[l];
+    if (l == inner || r.size < least || !r.box.contains(p)) continue;
+    if (best && r.size >= stats_[best].size) continue;  // the innermost: the smallest
+    copy_region(l, enclosure_);
+    ops_.fill_holes(enclosure_);
+    if (enclosure_.at(p)) best = l;
+  }
+  return best;
+}
+
 void ObjectFinder::copy_region(int label, Mask& out) {
   BoundsAccumulator bounds;
   for (int y = 0; y < regions_.height(); ++y) {
@@ -246,7 +260,14 @@ bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const F
     return false;
   }
   regions_.label(candidates_.view(), false);
-  copy_region(regions_.row(start->y)[start->x], out);
+  int label = regions_.row(start->y)[start->x];
+  // A region smaller than any the finder takes for an object (a detail of a print under the
+  // user's point), inside a larger one (the print's frame around it): the object is the larger
+  // one, holes and all.
+  if (regions_.size(label) < p.min_area * w * h) {
+    if (const int outer = enclosing_region(*start, label, p.min_area * w * h)) label = outer;
+  }
+  copy_region(label, out);
   if (moments(out).area > p.max_area * w * h) {
     why = "the region around the inner point covers most of the frame";
     return false;

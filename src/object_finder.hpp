@@ -82,6 +82,9 @@ class ObjectFinder {
   template <class Score>
   int best_region(Score&& score) const;
   void copy_region(int label, Mask& out);
+  // The smallest labelled region of at least `least` pixels, other than `inner`, that encloses
+  // work pixel `p` (it lies in the region's holes); 0 for none.
+  int enclosing_region(Point2i p, int inner, double least);
 
   struct RegionStats {
     std::int64_t size = 0;
@@ -93,7 +96,7 @@ class ObjectFinder {
   std::vector<std::uint32_t> border_counts_;
   std::vector<std::uint8_t> background_;  // per colour bin
   std::vector<std::uint8_t> like_;
-  Mask candidates_, opened_;
+  Mask candidates_, opened_, enclosure_;
   RegionLabels regions_;
   MotionCounts moving_, moving_before_;
   std::vector<std::int32_t> samples_;      // motion samples per work pixel (count_motion)

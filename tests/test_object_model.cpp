@@ -412,5 +412,30 @@ TEST(ObjectModel, StartsFromABoxAroundTheObject) {
   EXPECT_FALSE(w.features.valid());
 }
 
+// A printed box: a yellow frame around a picture that shows the wall's own colours, and in it a
+// small red figure. A user's point on the figure means the box: the figure is far smaller than
+// any object the finder would take, and the box's frame encloses it.
+TEST(ObjectModel, APointOnADetailOfAPrintStartsTheWholeObject) {
+  constexpr int kW = 320, kH = 240;
+  cv::Mat bgr(kH, kW, CV_8UC3, cv::Scalar(205, 210, 215));  // the wall
+  const cv::Rect box(70, 60, 180, 120), picture(100, 85, 120, 70), figure(150, 112, 8, 10);
+  cv::rectangle(bgr, box, cv::Scalar(40, 190, 230), cv::FILLED);       // yellow
+  cv::rectangle(bgr, picture, cv::Scalar(205, 210, 215), cv::FILLED);  // the wall's
+  cv::rectangle(bgr, figure, cv::Scalar(40, 40, 200), cv::FILLED);     // red
+  cv::Mat i420;
+  cv::cvtColor(bgr, i420, cv::COLOR_BGR2YUV_I420);
+  Tracker t;
+  t.seed({figure.x + figure.width / 2, figure.y + figure.height / 2});
+  TrackResult r;
+  for (int i = 0; i < 5; ++i)
+    r = t.track(test::i420_view(i420, kW, kH), EdgeParams{}, i / 30.0, Method::GapTolerantFilling,
+                {}, {});
+  ASSERT_TRUE(r.features.valid()) << status_name(r.status) << ": " << r.detail;
+  const double area = static_cast<double>(box.area());
+  EXPECT_NEAR(r.features.area / area, 1.0, 0.25) << "the box, picture and all";
+  EXPECT_NEAR(r.features.centroid.x, box.x + box.width / 2.0, 6);
+  EXPECT_NEAR(r.features.centroid.y, box.y + box.height / 2.0, 6);
+}
+
 }  // namespace
 }  // namespace projtrack
