@@ -223,8 +223,7 @@ bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& f
     }
     if (round == 0) take_unknown_inside(seed, out);
     cut_arm(out, whole, seed, p);
-    ops_.erode(out, 1, core_);
-    learn(moments(core_).area > 0 ? core_ : out, out, p.ring, 1.0);
+    learn(learning_core(out, p), out, p.ring, 1.0);
     score();
     const bool grew = moments(out).area > 1.02 * m.area;
     embed(out, out.rect(), prior_);
@@ -292,6 +291,24 @@ bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion
     if (!cut || attempt == 2) return true;
     margin *= 2;
   }
+}
+
+const Mask& ObjectModel::learning_core(const Mask& s, const ObjectModelParams& p) {
+  const int r = at_least(p.arm_cut, moments(s).area, 1);
+  ops_.erode(s, r, core_);
+  if (r > 1 && moments(core_).area > 0) {
+    ops_.dilate(core_, r, hull_);  // the opening: where the silhouette is thicker than an arm
+    embed(hull_, s.rect(), grown_);
+    for (int y = 0; y < grown_.rect().height; ++y) {
+      std::uint8_t* g = grown_.row(y);
+      const std::uint8_t* o = s.row(y);
+      for (int x = 0; x < grown_.rect().width; ++x) g[x] &= o[x];
+    }
+    ops_.erode(grown_, 1, core_);
+    if (moments(core_).area > 0) return core_;
+  }
+  ops_.erode(s, 1, core_);  // no thick part: all of it, less its outline
+  return moments(core_).area > 0 ? core_ : s;
 }
 
 void ObjectModel::accept(const Mask& s, const ObjectModelParams& p) {

@@ -80,6 +80,13 @@ class ObjectModel {
   std::vector<std::uint8_t> arm_;  // per piece: it reaches the frame's border
   int scale_ = 1;
   int unlearned_ = 0;  // accepted frames since the model last learned
+  // What of a first silhouette `s` the start learns the colours from (in core_ or `s` itself):
+  // where it is thicker than an arm (an opening by ObjectModelParams::arm_cut of √area), less its
+  // outline pixel. A band along the hand that holds the object (its shadowed underside) that the
+  // start's segmentation let in is then not learned as the object's, and does not grow round by
+  // round. (While tracking, the whole silhouette is learned: an object's own thin parts, a hand's
+  // fingers, would otherwise fade from the model.)
+  const Mask& learning_core(const Mask& s, const ObjectModelParams& p);
   Mask silhouette_, prior_, core_, grown_, ring_, hull_;
   std::vector<std::uint8_t> likelihood_, edge_buffer_;
 };

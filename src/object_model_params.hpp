@@ -34,7 +34,8 @@ struct ObjectModelParams {
   // A first silhouette that reaches the frame's border has taken in the arm that holds the
   // object (a held object is in the picture): it is cut where it is thinner than twice this share
   // of √area (an opening), and the pieces that then reach the border are dropped, unless the seed
-  // is in one.
+  // is in one. The start learns the colours only where the silhouette is thicker than that, so
+  // a thin band of the hand that joined it is not learned as the object's. 0: neither.
   double arm_cut = 0.1;
 };
 
