@@ -4,9 +4,9 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "features.hpp"
-#include "method.hpp"
-#include "trace.hpp"
+#include "projtrack/features.hpp"
+#include "projtrack/method.hpp"
+#include "projtrack/trace.hpp"
 
 namespace projtrack::bench {
 

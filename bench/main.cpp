@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
-#include "estimator.hpp"
 #include "figures.hpp"
 #include "method_list.hpp"
 #include "peers.hpp"
 #include "progress.hpp"
+#include "projtrack/estimator.hpp"
 #include "scene.hpp"
 #include "sequence.hpp"
 
@@ -231,9 +231,7 @@ int sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progres
        {2, 3, 4, 6, 8, 12, 16},
        {Method::GapTolerantFilling},
        [](Params& p, double v) { p.grid_size = int(v); }},
-      {"max_gap",
-       kMaxGapValues,
-       reading(kReadsMaxGap),
+      {"max_gap", kMaxGapValues, reading(kReadsMaxGap),
        [](Params& p, double v) { p.max_gap = int(v); }},
       {"block_size",
        {4, 6, 8, 12, 16},

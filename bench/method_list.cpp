@@ -3,7 +3,7 @@
 #include <fstream>
 #include <string_view>
 
-#include "method.hpp"
+#include "projtrack/method.hpp"
 
 namespace projtrack::bench {
 

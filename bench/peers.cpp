@@ -2,7 +2,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "estimator.hpp"  // border_status: the status the estimators give
+#include "projtrack/estimator.hpp"  // border_status: the status the estimators give
 
 namespace projtrack::bench {
 

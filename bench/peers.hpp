@@ -3,7 +3,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "features.hpp"
+#include "projtrack/features.hpp"
 
 namespace projtrack::bench {
 

@@ -33,10 +33,10 @@
 #include <vector>
 
 #include "element_harness.hpp"
-#include "geometry.hpp"
 #include "machine.hpp"
-#include "method.hpp"
 #include "progress.hpp"
+#include "projtrack/geometry.hpp"
+#include "projtrack/method.hpp"
 
 namespace projtrack::bench {
 namespace {

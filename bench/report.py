@@ -675,7 +675,7 @@ class Report:
                     '(`TrackerParams::strategy`).')
         if default is None:
             return f'The better is **{better[0]}**; {code}.'
-        return (f'The better is **{better[0]}**, but {code}: change it in src/tracker.hpp, or say '
+        return (f'The better is **{better[0]}**, but {code}: change it in include/projtrack/tracker.hpp, or say '
                 'why not.')
 
     # --- the document ------------------------------------------------------------------
@@ -898,9 +898,9 @@ class Report:
         self.max_gap_table()
         if mismatches:
             w(f'**The defaults in use differ from the chosen values for: {", ".join(mismatches)}** '
-              '— update `src/params.hpp` and run `./run bench` again.')
+              '— update `include/projtrack/params.hpp` and run `./run bench` again.')
         else:
-            w('The defaults in `src/params.hpp` (and so the element\'s) are the chosen values'
+            w('The defaults in `include/projtrack/params.hpp` (and so the element\'s) are the chosen values'
               + (', apart from those held above for the reasons given.' if any(
                   abs(float(current.get(p, pick)) - pick) > 1e-9
                   for p, (pick, _, _) in choice.items()) else '.'))

@@ -28,15 +28,15 @@
 
 #include "adversarial.hpp"
 #include "alloc_count.hpp"
-#include "box_blur.hpp"
-#include "canny.hpp"
-#include "edge_region.hpp"
+#include "edges/box_blur.hpp"
 #include "machine.hpp"
 #include "method_list.hpp"
 #include "peers.hpp"
+#include "projtrack/canny.hpp"
+#include "projtrack/tracker.hpp"
 #include "scene.hpp"
 #include "sequence.hpp"
-#include "tracker.hpp"
+#include "tracker/edge_region.hpp"
 
 namespace projtrack::bench {
 namespace {

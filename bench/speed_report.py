@@ -379,7 +379,7 @@ def bounded_section(rows, methods, default):
           "time is the least of its runs: what it costs, without the shared machine's noise. "
           "The adversarial set (`synthetic/adversarial.hpp`: " + (", ".join(contents) or MISSING)
           + ") is fresh content on every frame, made to cost the estimators and the edges as "
-          "much as it can. The tests (`tests/test_work_budget.cpp`, "
+          "much as it can. The tests (`tests/tracker/test_work_budget.cpp`, "
           "`tests/gst/test_element_budget.cpp`) assert the work each frame does against its "
           "budget, never a time; these are the times that work comes to.\n"]
     md.append("### The element's defaults, each method\n")
@@ -431,7 +431,7 @@ def ordinary_work_section(rows):
                    and r["what"] == "default max-work"), None)
     md = ["## Work per frame on ordinary content\n",
           "Not a time: the work (`TrackResult::work`, units of about one pixel of a fill: "
-          "`src/work_budget.hpp`) each frame needs with no limit, as a multiple of the frame's "
+          "`include/projtrack/work_budget.hpp`) each frame needs with no limit, as a multiple of the frame's "
           "pixels, for the tracker with the element's defaults and each object model and "
           "method; then the same frames with the default budget of "
           + (MISSING if budget is None else f"{budget:g}") + " × the frame's pixels: the frames "
@@ -687,7 +687,7 @@ def main():
               "every ray's end) is redone on a wider region, then on the whole frame, so the "
               "answer never depends on the region (tested for every method against whole-frame "
               "edges).\n"
-              "- **Our own Canny and box blur** (`src/canny.cpp`, `src/box_blur.cpp`): the same "
+              "- **Our own Canny and box blur** (`src/edges/canny.cpp`, `src/edges/box_blur.cpp`): the same "
               "edges as `cv::Canny` and `cv::blur`, bit for bit, on buffers kept between calls. "
               "Measured above on the regions the tracker asks for, ours are "
               f"{speed_phrase([c[4] for c in regions])} (box blur) and "

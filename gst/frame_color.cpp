@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "gray_conversion.hpp"
+#include "edges/gray_conversion.hpp"
 
 namespace projtrack::gst {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "color_view.hpp"
+#include "projtrack/color_view.hpp"
 
 namespace projtrack::gst {
 

@@ -76,12 +76,12 @@
 #include <utility>
 #include <vector>
 
-#include "edge_detection.hpp"
 #include "frame_color.hpp"
 #include "frame_mapping.hpp"
 #include "overlay.hpp"
-#include "sample_clock.hpp"
-#include "tracker.hpp"
+#include "projtrack/edge_detection.hpp"
+#include "projtrack/sample_clock.hpp"
+#include "projtrack/tracker.hpp"
 
 GST_DEBUG_CATEGORY_STATIC(gst_projtrack_debug);
 #define GST_CAT_DEFAULT gst_projtrack_debug
@@ -200,7 +200,7 @@ static GstStaticPadTemplate sink_template = GST_STATIC_PAD_TEMPLATE(
 static GstStaticPadTemplate src_template = GST_STATIC_PAD_TEMPLATE(
     "src", GST_PAD_SRC, GST_PAD_ALWAYS, GST_STATIC_CAPS(GST_VIDEO_CAPS_MAKE(VIDEO_FORMATS)));
 
-// One value per row of the table of methods (src/method_table.def): its nick and description.
+// One value per row of the table of methods (include/projtrack/method_table.def): its nick and description.
 GType gst_projtrack_method_get_type(void) {
   static GType type = 0;
   static GEnumValue values[projtrack::kMethodCount + 1];  // and the terminating zeros

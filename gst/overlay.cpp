@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "edges/gray_conversion.hpp"
 #include "font.hpp"
-#include "gray_conversion.hpp"
 
 namespace projtrack::gst {
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "method.hpp"
-#include "trace.hpp"
-#include "tracker.hpp"
+#include "projtrack/method.hpp"
+#include "projtrack/trace.hpp"
+#include "projtrack/tracker.hpp"
 
 namespace projtrack::gst {
 

@@ -1,5 +1,5 @@
 // Adversarial content: frames made to cost the estimators and the tracker as much work as
-// possible (issue 16), shared by the tests (tests/test_work_budget.cpp) and the speed benchmark
+// possible (issue 16), shared by the tests (tests/tracker/test_work_budget.cpp) and the speed benchmark
 // (bench/speed.cpp). Every frame is fresh: the same kind gives another pattern on every index.
 #pragma once
 

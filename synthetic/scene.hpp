@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "edge_detection.hpp"
-#include "geometry.hpp"
+#include "projtrack/edge_detection.hpp"
+#include "projtrack/geometry.hpp"
 
 namespace projtrack::synthetic {
 

@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
+#include "projtrack/tracker.hpp"
 #include "scene.hpp"
-#include "tracker.hpp"
 
 namespace projtrack::synthetic {
 

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "color_view.hpp"
-#include "geometry.hpp"
-#include "image_view.hpp"
+#include "projtrack/color_view.hpp"
+#include "projtrack/geometry.hpp"
+#include "projtrack/image_view.hpp"
 
 namespace projtrack::test {
 

@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-#include "gray_conversion.hpp"
+#include "edges/gray_conversion.hpp"
 #include "scene.hpp"
 #include "sequence.hpp"
 

@@ -1,4 +1,4 @@
-// What a unit of work (src/work_budget.hpp) costs in time, method by method, beside what a pixel
+// What a unit of work (include/projtrack/work_budget.hpp) costs in time, method by method, beside what a pixel
 // visited (Features::pixels_visited) costs: the check of the budget's weights. Every estimator
 // runs on the adversarial set at 1920×1080 (synthetic/adversarial.hpp: each frame read as an edge
 // map, and its Canny edges), from the frame's centre and from a point off it, with its default
@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "adversarial.hpp"
-#include "canny.hpp"
-#include "edge_detection.hpp"
-#include "estimator.hpp"
-#include "work_budget.hpp"
+#include "projtrack/canny.hpp"
+#include "projtrack/edge_detection.hpp"
+#include "projtrack/estimator.hpp"
+#include "projtrack/work_budget.hpp"
 
 namespace {
 

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "fuzz_input.hpp"
-#include "method.hpp"
+#include "projtrack/method.hpp"
 
 namespace {
 

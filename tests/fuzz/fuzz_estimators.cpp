@@ -10,11 +10,11 @@
 #include <limits>
 #include <vector>
 
-#include "edge_detection.hpp"
-#include "estimator.hpp"
 #include "fuzz_input.hpp"
-#include "tracker.hpp"
-#include "work_budget.hpp"
+#include "projtrack/edge_detection.hpp"
+#include "projtrack/estimator.hpp"
+#include "projtrack/tracker.hpp"
+#include "projtrack/work_budget.hpp"
 
 namespace {
 

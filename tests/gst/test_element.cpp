@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "method.hpp"
+#include "projtrack/method.hpp"
 #include "scenes.hpp"
 #include "sequence.hpp"
 

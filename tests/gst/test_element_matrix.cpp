@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "method.hpp"
+#include "projtrack/method.hpp"
 
 namespace {
 

@@ -37,25 +37,24 @@ kind = options['default_library']
 root = stage + prefix
 pcdir = os.path.join(root, libdir, 'pkgconfig')
 
-# The headers: projtrack.hpp and what it includes, directly or not; nothing internal.
-src = os.path.join(source, 'src')
+# The headers: exactly include/projtrack/, which is projtrack.hpp and what it includes, directly or
+# not; no stage's internals (src/) among them.
+public = os.path.join(source, 'include', 'projtrack')
+shipped = set(os.listdir(public))
 closure, todo = set(), ['projtrack.hpp']
 while todo:
     h = todo.pop()
     if h not in closure:
         closure.add(h)
-        todo += re.findall(r'#include "([^"]+)"', open(os.path.join(src, h)).read())
+        todo += re.findall(r'#include "([^"]+)"', open(os.path.join(public, h)).read())
 installed = set(os.listdir(os.path.join(root, includedir, 'projtrack')))
-check(installed == closure, f'installed headers are the include closure of projtrack.hpp '
-      f'({len(installed)} of {len([f for f in os.listdir(src) if f.endswith((".hpp", ".def"))])}; '
-      f'extra {sorted(installed - closure)}, missing {sorted(closure - installed)})')
-# The estimators' internals and the Tracker's stages: a Tracker holds them behind a pointer, and
-# TrackerParams holds the appearance model's tuning as plain structs of their own headers.
-for internal in ['scratch_mask.hpp', 'vector_clones.hpp', 'grid_filling.hpp', 'object_finder.hpp',
-                 'object_model.hpp', 'appearance_model.hpp', 'silhouette.hpp',
-                 'silhouette_pieces.hpp', 'region_labels.hpp', 'work_frame.hpp', 'mask.hpp',
-                 'edge_source.hpp', 'motion_acquisition.hpp', 'pointer.hpp']:
-    check(internal not in installed, f'{internal} is not installed')
+check(installed == shipped, f'installed headers are exactly include/projtrack/ ({len(installed)}; '
+      f'extra {sorted(installed - shipped)}, missing {sorted(shipped - installed)})')
+check(closure == shipped, f'include/projtrack/ is the include closure of projtrack.hpp '
+      f'(not reached {sorted(shipped - closure)}, outside it {sorted(closure - shipped)})')
+internal = {f for _, _, fs in os.walk(os.path.join(source, 'src')) for f in fs
+            if f.endswith(('.hpp', '.def'))}
+check(not (installed & internal), f'no internal header is installed: {sorted(installed & internal)}')
 
 # projtrack.pc moved with the staging folder: its prefix line points there (pkg-config's
 # --define-variable would move OpenCV's prefix too).

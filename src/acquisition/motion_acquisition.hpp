@@ -1,0 +1,39 @@
+// The edges model's automatic acquisition, as the original system did it: where the frame
+// moves, the estimator from candidate seeds; the most compact moving region wins.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/scratch_mask.hpp"
+#include "projtrack/estimator.hpp"
+#include "projtrack/motion_detector.hpp"
+#include "projtrack/tracker_params.hpp"
+#include "projtrack/work_budget.hpp"
+
+namespace projtrack {
+
+class MotionAcquisition {
+ public:
+  // The first estimate of a new track on this frame (`gray` and its `edges`), by
+  // TrackerParams::acquisition; none (and `why`) while there is nothing to take. `limit` is the
+  // area the fills may stop at. Every seed's estimate spends from `budget`: once it runs out (or
+  // its stop flag is set) no further seed is tried, and the best of the seeds tried in full is
+  // taken (budget.ran_out() says whether the search was cut short).
+  std::optional<Features> acquire(const ImageView& gray, const ImageView& edges, Estimator& est,
+                                  const Params& params, double limit, const TrackerParams& tp,
+                                  WorkBudget& budget, std::string& why);
+  // Motion history is stale after a track: the next search compares fresh frames.
+  void reset() { motion_.reset(); }
+
+ private:
+  MotionDetector motion_;
+  // This frame's pixels of fills cut short by the area limit (regions too large to be the object):
+  // a seed in one is not tried. All zero out of `too_large_box_` between frames.
+  ScratchMask too_large_;
+  Rect too_large_box_;
+  MotionDetector::Motion moved_;
+  Acquisition last_mode_ = Acquisition::Auto;
+};
+
+}  // namespace projtrack
