@@ -1,5 +1,5 @@
 // How the appearance model finds, segments and learns the object from frame to frame
-// (ObjectModel, object_model.hpp): part of TrackerParams.
+// (SilhouetteModel, src/appearance/silhouette_model.hpp): part of TrackerParams.
 #pragma once
 
 namespace projtrack {

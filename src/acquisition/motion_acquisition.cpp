@@ -1,10 +1,10 @@
 #include "acquisition/motion_acquisition.hpp"
 
 #include <algorithm>
-#include <cstdio>
 
+#include "acquisition/motion_gate.hpp"
+#include "core/plausibility.hpp"
 #include "projtrack/inner_point.hpp"
-#include "tracker/plausibility.hpp"
 
 namespace projtrack {
 
@@ -23,33 +23,10 @@ std::optional<Features> MotionAcquisition::acquire(const ImageView& gray, const 
                                                    Estimator& est, const Params& params,
                                                    double limit, const TrackerParams& tp,
                                                    WorkBudget& budget, std::string& why) {
-  // Motion history from before a switch of mode (or from the last search) is stale.
-  if (tp.acquisition != last_mode_) motion_.reset();
-  last_mode_ = tp.acquisition;
-  if (tp.acquisition == Acquisition::Manual) {
-    why = "no inner point: set one, or click in the video";
-    return std::nullopt;
-  }
   EstimateOptions options;
   options.budget = &budget;
-  if (tp.acquisition == Acquisition::Center) {
-    Features f = est.estimate(edges, {edges.width / 2, edges.height / 2}, params, options);
-    why = implausible(f, edges.width, edges.height, tp);
-    if (why.empty()) return f;
-    why = "at the frame centre: " + why;
-    return std::nullopt;
-  }
-  if (!motion_.update(gray, tp.motion, moved_)) {
-    why = "waiting for a second frame to compare";
-    return std::nullopt;
-  }
-  if (moved_.fraction < tp.min_motion) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "waiting for motion (%.2g %% of the frame changed)",
-                  100 * moved_.fraction);
-    why = buf;
-    return std::nullopt;
-  }
+  why = wait_for_motion(motion_, gray, tp.motion, tp.min_motion, moved_);
+  if (!why.empty()) return std::nullopt;
   std::vector<Point2i> candidates{round_to_pixel(moved_.centroid)};
   if (tp.strategy == AutoAcquisition::CompactMovingRegion) {
     const std::size_t n = moved_.points.size(), k = std::max(1, tp.candidates);
@@ -84,7 +61,7 @@ std::optional<Features> MotionAcquisition::acquire(const ImageView& gray, const 
     tried += f.status != EstimateStatus::OverBudget && f.status != EstimateStatus::Interrupted;
     if (limit > 0 && f.area > limit)  // cut short by the limit: a region too large
       budget.spend(est.add_fill_to(too_large_, too_large_box_));
-    if (!implausible(f, edges.width, edges.height, tp).empty()) continue;
+    if (!why_implausible(f, edges.width, edges.height, tp).empty()) continue;
     // A sliver between two edges (seen on real footage: a 2×23 px strip) is not an object.
     if (std::min(f.bbox.width, f.bbox.height) < tp.min_acquired_side) continue;
     if (tp.strategy == AutoAcquisition::MotionCentroid) return f;

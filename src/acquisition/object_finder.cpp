@@ -21,10 +21,10 @@ Point2i to_frame_pixel(Point2i p, int scale) {
 
 }  // namespace
 
-void ObjectFinder::load(const ColorView& frame, const FinderParams& p) {
+void ObjectFinder::load(const ColorView& frame, const FinderParams& p, WorkFrame& work) {
   const int w = frame.luma.width, h = frame.luma.height;
   const int s = work_scale(static_cast<double>(w) * h, p.work_pixels);
-  work_.build(frame, s, {0, 0, (w + s - 1) / s, (h + s - 1) / s});
+  work.build(frame, s, {0, 0, (w + s - 1) / s, (h + s - 1) / s});
 }
 
 void ObjectFinder::foreground(const FinderParams& p) {
@@ -137,9 +137,14 @@ void ObjectFinder::count_foreground(const FinderParams& p) {
 }
 
 double ObjectFinder::foreground_share(const Mask& s, int scale, const FinderParams& p) const {
+  return foreground_share(work_, s, scale, p);
+}
+
+double ObjectFinder::foreground_share(const WorkFrame& work, const Mask& s, int scale,
+                                      const FinderParams& p) const {
   if (scene_seen_ < p.background_frames || scene_rect_.empty()) return 1.0;
-  const int fs = std::max(1, work_.scale());
-  const ImageView& luma = work_.view().luma;
+  const int fs = std::max(1, work.scale());
+  const ImageView& luma = work.view().luma;
   double in = 0, differ = 0;
   for (int y = 0; y < s.rect().height; ++y) {
     for (int x = 0; x < s.rect().width; ++x) {
@@ -157,9 +162,9 @@ double ObjectFinder::foreground_share(const Mask& s, int scale, const FinderPara
 }
 
 double ObjectFinder::foreground_share(const ColorView& frame, const Mask& s, int scale,
-                                      const FinderParams& p) {
-  load(frame, p);
-  return foreground_share(s, scale, p);
+                                      const FinderParams& p) const {
+  load(frame, p, checked_);
+  return foreground_share(checked_, s, scale, p);
 }
 
 void ObjectFinder::measure_regions() {
@@ -236,7 +241,7 @@ void ObjectFinder::copy_region(int label, Mask& out) {
 
 bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
                              Mask& out, std::string& why) {
-  load(frame, p);
+  load(frame, p, work_);
   foreground(p);
   const int w = candidates_.rect().width, h = candidates_.rect().height, s = work_.scale();
   const Point2i seed{seed_pixel.x / std::max(1, s), seed_pixel.y / std::max(1, s)};
@@ -294,7 +299,7 @@ bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const Finde
     if (!out.empty() && moments(out).area >= 0.2 * wb.width * wb.height) return true;
   }
   // Nothing of its own colours fills the box: the user's box is the object's outline.
-  load(frame, p);
+  load(frame, p, work_);
   out.reset(wb & work_.rect());
   const double cx = wb.x + wb.width / 2.0 - 0.5, cy = wb.y + wb.height / 2.0 - 0.5;
   const double rx = wb.width / 2.0, ry = wb.height / 2.0;
@@ -312,7 +317,7 @@ bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const Finde
 bool ObjectFinder::from_motion(const ColorView& frame, const MotionDetector::Motion& motion,
                                const MotionDetector::Motion& before, const FinderParams& p,
                                Mask& out, Point2i& seed, std::string& why) {
-  load(frame, p);
+  load(frame, p, work_);
   foreground(p);
   const int w = candidates_.rect().width, h = candidates_.rect().height;
   const double frame_area = static_cast<double>(w) * h;
@@ -351,7 +356,7 @@ bool ObjectFinder::from_model(const ColorView& frame, const AppearanceModel& mod
                               const MotionDetector::Motion& motion, double area, double factor,
                               Point2d near, const FinderParams& p, Mask& out, Point2i& seed,
                               std::string& why) {
-  load(frame, p);
+  load(frame, p, work_);
   const int w = work_.rect().width, h = work_.rect().height, s = work_.scale();
   model.likelihood(work_.view(), {0, 0}, {0, 0, w, h}, like_);
   candidates_.reset({0, 0, w, h});

@@ -22,8 +22,10 @@ class ObjectFinder {
   // The share of `s` (work coordinates at `scale`) that differs from the scene's background, as
   // the last search from motion or by colour learned it; 1 while it is not yet known.
   double foreground_share(const Mask& s, int scale, const FinderParams& p) const;
-  // The same on `frame`, a frame it has not searched (a tracked one).
-  double foreground_share(const ColorView& frame, const Mask& s, int scale, const FinderParams& p);
+  // The same on `frame`, a frame it has not searched (a tracked one): read into a work frame of
+  // its own, so that the search's state is left as it was.
+  double foreground_share(const ColorView& frame, const Mask& s, int scale,
+                          const FinderParams& p) const;
   // The colours of the frame's border strip on the last search from a seed or by motion:
   // counts per AppearanceModel colour bin, at scale().
   const std::vector<std::uint32_t>& border_colours() const { return border_counts_; }
@@ -52,8 +54,11 @@ class ObjectFinder {
                   const FinderParams& p, Mask& out, Point2i& seed, std::string& why);
 
  private:
-  // The whole frame at the finder's scale, into work_.
-  void load(const ColorView& frame, const FinderParams& p);
+  // The whole frame at the finder's scale, into `work`.
+  static void load(const ColorView& frame, const FinderParams& p, WorkFrame& work);
+  // foreground_share() of `s` against the background, on `work`.
+  double foreground_share(const WorkFrame& work, const Mask& s, int scale,
+                          const FinderParams& p) const;
   // The pixels whose colours are not seen on the border, into candidates_.
   void foreground(const FinderParams& p);
   // Samples of `motion` per labelled region: in it, and within one work pixel of it.
@@ -106,7 +111,8 @@ class ObjectFinder {
   Rect scene_rect_;
   int scene_seen_ = 0;
   MaskOps ops_;
-  WorkFrame work_;
+  WorkFrame work_;             // the frame searched last
+  mutable WorkFrame checked_;  // a tracked frame foreground_share() reads
 };
 
 }  // namespace projtrack

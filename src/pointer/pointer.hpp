@@ -20,8 +20,9 @@ class Pointer {
   // One accepted estimate at `t` seconds in a width × height frame.
   void update(const Features& f, int width, int height, double t, const TrackerParams& tp);
   // A refused frame: a push in progress does not survive it.
-  void interrupt() { push_.reset(); }
-  void reset() { area0_ = 0; }
+  void cancel_gesture() { push_.reset(); }
+  // Forgets the object's first area: the next start() sets depth 1 afresh.
+  void forget() { area0_ = 0; }
 
   const Pose& pose() const { return pose_; }  // smoothed when TrackerParams::smoothing
   const Pose& raw() const { return raw_; }

@@ -6,7 +6,7 @@
 #include "acquisition/motion_acquisition.hpp"
 #include "projtrack/estimator.hpp"
 #include "projtrack/work_budget.hpp"
-#include "tracker/plausibility.hpp"
+#include "core/plausibility.hpp"
 
 namespace projtrack {
 namespace {

@@ -1,5 +1,5 @@
 // The tracker with the edges model (the paper's tracker), frame by frame: acquisition, the inner
-// point, refusals, the pose. The appearance model has its own tests (test_object_model.cpp).
+// point, refusals, the pose. The appearance model has its own tests (test_silhouette_model.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>

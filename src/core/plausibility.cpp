@@ -1,4 +1,4 @@
-#include "tracker/plausibility.hpp"
+#include "core/plausibility.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +16,7 @@ std::string percent(double fraction) {
 
 }  // namespace
 
-std::string implausible(const Features& f, int width, int height, const TrackerParams& tp) {
+std::string why_implausible(const Features& f, int width, int height, const TrackerParams& tp) {
   if (!f.valid()) return f.detail.empty() ? std::string(status_name(f.status)) : f.detail;
   const double frame = static_cast<double>(width) * height;
   if (f.status == EstimateStatus::CoversFrame)
@@ -28,9 +28,9 @@ std::string implausible(const Features& f, int width, int height, const TrackerP
   return {};
 }
 
-std::string refused(const Features& f, int width, int height, const TrackerParams& tp,
-                    const Features* last, double limit) {
-  std::string why = implausible(f, width, height, tp);
+std::string why_refused(const Features& f, int width, int height, const TrackerParams& tp,
+                        const Features* last, double limit) {
+  std::string why = why_implausible(f, width, height, tp);
   if (!why.empty() || !last) return why;
   const double ratio = f.area / last->area;
   char buf[96];

@@ -1,5 +1,6 @@
-// The object as the tracker knows it between frames: its silhouette and its colours against its
-// surroundings'. Finds the object's silhouette on each new frame near the last one, and learns.
+// The appearance object model (ObjectModelKind::Appearance): the object as the tracker knows it
+// between frames, its silhouette and its colours against its surroundings'. Finds the object's
+// silhouette on each new frame near the last one, and learns.
 // It works at a scale picked from the object's size (see WorkFrame): its masks are in work
 // coordinates at scale().
 #pragma once
@@ -17,12 +18,12 @@
 
 namespace projtrack {
 
-class ObjectModel {
+class SilhouetteModel {
  public:
   // Forgets the object and its colours.
-  void reset();
+  void forget();
   // Forgets where the object is, keeps its colours (to find it again).
-  void lose() { silhouette_.reset({}); }
+  void forget_position() { silhouette_.reset({}); }
   bool tracking() const { return !silhouette_.empty(); }
   bool knows_colours() const { return !appearance_.empty(); }
   int scale() const { return scale_; }

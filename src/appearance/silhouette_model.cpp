@@ -1,4 +1,4 @@
-#include "appearance/object_model.hpp"
+#include "appearance/silhouette_model.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,29 +48,29 @@ bool reaches_border(const Rect& b, const Rect& frame) {
 
 }  // namespace
 
-void ObjectModel::reset() {
+void SilhouetteModel::forget() {
   appearance_.reset();
   silhouette_.reset({});
 }
 
-Point2i ObjectModel::to_work(Point2i p) const {
+Point2i SilhouetteModel::to_work(Point2i p) const {
   const auto down = [&](int v) { return v >= 0 ? v / scale_ : -((-v + scale_ - 1) / scale_); };
   return {down(p.x), down(p.y)};
 }
 
-void ObjectModel::load(const ColorView& frame, const Rect& box, int margin, double area,
-                       bool learning, const ObjectModelParams& p) {
+void SilhouetteModel::load(const ColorView& frame, const Rect& box, int margin, double area,
+                           bool learning, const ObjectModelParams& p) {
   const int ring = learning ? at_least(p.ring, area, 3) : 0;
   work_.build(frame, scale_, grown(box, std::max(margin, ring)));
   score();
 }
 
-void ObjectModel::score() {
+void SilhouetteModel::score() {
   const Rect& roi = work_.rect();
   appearance_.likelihood(work_.view(), {roi.x, roi.y}, roi, likelihood_);
 }
 
-void ObjectModel::recentre(Mask& prior, int window) {
+void SilhouetteModel::recentre(Mask& prior, int window) {
   // Mean shift on the likelihood, as CamShift does: the prior moves to the centre of the
   // object-like pixels around it, a few times, so that an object faster than its predicted
   // motion is not cut where the prior ends.
@@ -96,7 +96,7 @@ void ObjectModel::recentre(Mask& prior, int window) {
   }
 }
 
-void ObjectModel::learn(const Mask& object, const Mask& silhouette, double ring, double rate) {
+void SilhouetteModel::learn(const Mask& object, const Mask& silhouette, double ring, double rate) {
   // The ring starts at the silhouette's convex hull: what the silhouette missed in its
   // concavities (a print at its outline, a shadowed part) may be the object's and must not be
   // learned as its surroundings.
@@ -112,8 +112,8 @@ void ObjectModel::learn(const Mask& object, const Mask& silhouette, double ring,
   appearance_.learn(work_.view(), {work_.rect().x, work_.rect().y}, object, ring_, rate);
 }
 
-bool ObjectModel::segment(EdgeSource& edges, const Mask& prior, double area, Point2i hint,
-                          int reach, const ObjectModelParams& p, Mask& out, bool first) {
+bool SilhouetteModel::segment(EdgeSource& edges, const Mask& prior, double area, Point2i hint,
+                              int reach, const ObjectModelParams& p, Mask& out, bool first) {
   const Rect& roi = work_.rect();
   const ImageView e = edges.work(work_, edge_map_, edge_buffer_);
   SilhouetteParams sp;
@@ -124,7 +124,7 @@ bool ObjectModel::segment(EdgeSource& edges, const Mask& prior, double area, Poi
          moments(out).area > 0;
 }
 
-void ObjectModel::take_unknown_inside(Point2i seed, Mask& s) {
+void SilhouetteModel::take_unknown_inside(Point2i seed, Mask& s) {
   // The core's colours are not all the object's (a print elsewhere on it): a colour not seen
   // more around the object than on it, within the convex hull of what the core's colours found,
   // is the object's too. What sticks out of that hull (the hand that holds the object) is not.
@@ -142,7 +142,8 @@ void ObjectModel::take_unknown_inside(Point2i seed, Mask& s) {
   ops_.fill_holes(s);
 }
 
-void ObjectModel::cut_arm(Mask& s, const Rect& frame, Point2i seed, const ObjectModelParams& p) {
+void SilhouetteModel::cut_arm(Mask& s, const Rect& frame, Point2i seed,
+                              const ObjectModelParams& p) {
   const MaskMoments m = moments(s);
   const Rect& b = m.bbox;
   if (!(p.arm_cut > 0) || !reaches_border(b, frame)) return;
@@ -176,10 +177,10 @@ void ObjectModel::cut_arm(Mask& s, const Rect& frame, Point2i seed, const Object
   ops_.fill_holes(s);
 }
 
-bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& first,
-                        int first_scale, Point2i seed_pixel,
-                        const std::vector<std::uint32_t>& background, const ObjectModelParams& p,
-                        Mask& out) {
+bool SilhouetteModel::start(const ColorView& frame, EdgeSource& edges, const Mask& first,
+                            int first_scale, Point2i seed_pixel,
+                            const std::vector<std::uint32_t>& background,
+                            const ObjectModelParams& p, Mask& out) {
   const double frame_area = moments(first).area * first_scale * first_scale;
   if (frame_area <= 0) return false;
   scale_ = work_scale(frame_area, p.work_pixels);
@@ -233,9 +234,9 @@ bool ObjectModel::start(const ColorView& frame, EdgeSource& edges, const Mask& f
   return true;
 }
 
-bool ObjectModel::resume(const ColorView& frame, EdgeSource& edges, const Mask& first,
-                         int first_scale, Point2i seed_pixel, const ObjectModelParams& p,
-                         Mask& out) {
+bool SilhouetteModel::resume(const ColorView& frame, EdgeSource& edges, const Mask& first,
+                             int first_scale, Point2i seed_pixel, const ObjectModelParams& p,
+                             Mask& out) {
   const double frame_area = moments(first).area * first_scale * first_scale;
   if (frame_area <= 0 || !knows_colours()) return false;
   scale_ = work_scale(frame_area, p.work_pixels);
@@ -249,8 +250,8 @@ bool ObjectModel::resume(const ColorView& frame, EdgeSource& edges, const Mask& 
   return true;
 }
 
-bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion, Point2i hint,
-                       const ObjectModelParams& p, Mask& out) {
+bool SilhouetteModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion, Point2i hint,
+                           const ObjectModelParams& p, Mask& out) {
   if (!tracking()) return false;
   const MaskMoments m = moments(silhouette_);
   embed(silhouette_, silhouette_.rect(), prior_);
@@ -293,7 +294,7 @@ bool ObjectModel::find(const ColorView& frame, EdgeSource& edges, Point2d motion
   }
 }
 
-const Mask& ObjectModel::learning_core(const Mask& s, const ObjectModelParams& p) {
+const Mask& SilhouetteModel::learning_core(const Mask& s, const ObjectModelParams& p) {
   const int r = at_least(p.arm_cut, moments(s).area, 1);
   ops_.erode(s, r, core_);
   if (r > 1 && moments(core_).area > 0) {
@@ -311,7 +312,7 @@ const Mask& ObjectModel::learning_core(const Mask& s, const ObjectModelParams& p
   return moments(core_).area > 0 ? core_ : s;
 }
 
-void ObjectModel::accept(const Mask& s, const ObjectModelParams& p) {
+void SilhouetteModel::accept(const Mask& s, const ObjectModelParams& p) {
   const int every = std::max(1, p.learn_every);
   if (++unlearned_ >= every) {
     // As many frames' worth of learning at once: 1 - (1 - rate)^every.

@@ -7,7 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
-#include "appearance/object_model.hpp"
+#include "appearance/silhouette_model.hpp"
 #include "projtrack/tracker.hpp"
 #include "scenes.hpp"
 
@@ -89,7 +89,7 @@ void expect_close(const TrackResult& r, const Frame& f, double centroid_px, doub
   EXPECT_NEAR(r.features.area / f.area, 1.0, area_share) << what;
 }
 
-TEST(ObjectModel, SeededTheWholeObjectWithoutTheArmAndWithItsPrint) {
+TEST(SilhouetteModel, SeededTheWholeObjectWithoutTheArmAndWithItsPrint) {
   const Frame f = render({});
   Tracker t;
   t.seed({160, 120});
@@ -98,7 +98,7 @@ TEST(ObjectModel, SeededTheWholeObjectWithoutTheArmAndWithItsPrint) {
   expect_close(r, f, 3, 0.1, "first frame");
 }
 
-TEST(ObjectModel, FollowsAMovingObjectWithEveryMethod) {
+TEST(SilhouetteModel, FollowsAMovingObjectWithEveryMethod) {
   for (Method m : kAllMethods) {
     Tracker t;
     t.seed({100, 120});
@@ -116,7 +116,7 @@ TEST(ObjectModel, FollowsAMovingObjectWithEveryMethod) {
   }
 }
 
-TEST(ObjectModel, AFingerAcrossTheObjectLeavesTwoPiecesBothCounted) {
+TEST(SilhouetteModel, AFingerAcrossTheObjectLeavesTwoPiecesBothCounted) {
   Scene s;
   s.finger = true;
   const Frame f = render(s);
@@ -128,7 +128,7 @@ TEST(ObjectModel, AFingerAcrossTheObjectLeavesTwoPiecesBothCounted) {
   expect_close(r, f, 3, 0.1, "across a finger");
 }
 
-TEST(ObjectModel, NoSeedTheMovingObjectAndNeverTheStaticBackground) {
+TEST(SilhouetteModel, NoSeedTheMovingObjectAndNeverTheStaticBackground) {
   Tracker t;
   Scene s;
   s.textured = true;
@@ -157,7 +157,7 @@ TEST(ObjectModel, NoSeedTheMovingObjectAndNeverTheStaticBackground) {
   EXPECT_TRUE(found);
 }
 
-TEST(ObjectModel, NoSeedAnObjectThatStopsIsStillTrackedAndNotTheBackground) {
+TEST(SilhouetteModel, NoSeedAnObjectThatStopsIsStillTrackedAndNotTheBackground) {
   // Found by motion, the object stops where the scene's background never had it: it differs from
   // the background on this frame, so it stays measured (a still object is no static region).
   Tracker t;
@@ -202,7 +202,7 @@ int creeping_found_at(const TrackerParams& tp) {
   return -1;
 }
 
-TEST(ObjectModel, NoSeedAnObjectThatBarelyMovesIsFoundByItsMovingOutline) {
+TEST(SilhouetteModel, NoSeedAnObjectThatBarelyMovesIsFoundByItsMovingOutline) {
   // Its changed pixels are under 2 % of its area, but a good share of the band along its outline.
   const int found = creeping_found_at({});
   EXPECT_GE(found, 2);
@@ -244,7 +244,7 @@ int acquired_at(double gain, const TrackerParams& tp) {
   return -1;
 }
 
-TEST(ObjectModel, NoSeedADimSceneIsSearchedWithThresholdsScaledToItsContrast) {
+TEST(SilhouetteModel, NoSeedADimSceneIsSearchedWithThresholdsScaledToItsContrast) {
   const int bright = acquired_at(1.0, {});
   ASSERT_GE(bright, 12);
   // At a fifth of the contrast the scene's changes are a fifth as large: with the thresholds
@@ -280,7 +280,7 @@ int tracked_in_dim_light(double light, const TrackerParams& tp) {
   return close;
 }
 
-TEST(ObjectModel, InADimRoomColoursAreReadAsInGoodLight) {
+TEST(SilhouetteModel, InADimRoomColoursAreReadAsInGoodLight) {
   // At 30 % of the light the brown object and the skin of the hand fall into the same colour
   // bins; read stretched to a normal exposure they are apart again.
   EXPECT_EQ(tracked_in_dim_light(1.0, {}), 20);
@@ -290,7 +290,7 @@ TEST(ObjectModel, InADimRoomColoursAreReadAsInGoodLight) {
   EXPECT_LT(tracked_in_dim_light(0.3, as_seen), 10);
 }
 
-TEST(ObjectModel, NoSeedNeverStartsOnASilhouetteThatRunsIntoTheFrameBorder) {
+TEST(SilhouetteModel, NoSeedNeverStartsOnASilhouetteThatRunsIntoTheFrameBorder) {
   // The disc is waved by an arm that reaches the frame's right border: what is found is the
   // disc, wholly in view, never a silhouette grown along the arm to the border.
   Tracker t;
@@ -312,7 +312,7 @@ TEST(ObjectModel, NoSeedNeverStartsOnASilhouetteThatRunsIntoTheFrameBorder) {
   EXPECT_TRUE(found);
 }
 
-TEST(ObjectModel, FoundAgainByItsColoursWithDepthGoingOn) {
+TEST(SilhouetteModel, FoundAgainByItsColoursWithDepthGoingOn) {
   Tracker t;
   t.seed({160, 120});
   Scene s;
@@ -352,7 +352,7 @@ TEST(ObjectModel, FoundAgainByItsColoursWithDepthGoingOn) {
   EXPECT_GT(r.raw_pose.depth, 1.1);
 }
 
-TEST(ObjectModel, TheSameAnswerAtAnyWorkScale) {
+TEST(SilhouetteModel, TheSameAnswerAtAnyWorkScale) {
   Scene s;
   s.width = 640;
   s.height = 480;
@@ -374,7 +374,7 @@ TEST(ObjectModel, TheSameAnswerAtAnyWorkScale) {
   expect_close(b, f, 3, 0.08, "coarse scale");
 }
 
-TEST(ObjectModel, GrayFramesTrackByBrightness) {
+TEST(SilhouetteModel, GrayFramesTrackByBrightness) {
   const Frame f = render({});
   ColorView gray = f.view();
   gray.chroma = {};
@@ -386,7 +386,7 @@ TEST(ObjectModel, GrayFramesTrackByBrightness) {
   EXPECT_LT(distance(r.features.centroid, f.centroid), 10);
 }
 
-TEST(ObjectModel, ASeedOutsideTheFrameSaysSo) {
+TEST(SilhouetteModel, ASeedOutsideTheFrameSaysSo) {
   const Frame f = render({});
   Tracker t;
   t.seed({5000, 10});
@@ -396,7 +396,7 @@ TEST(ObjectModel, ASeedOutsideTheFrameSaysSo) {
   EXPECT_FALSE(r.features.valid());
 }
 
-TEST(ObjectModel, StartsFromABoxAroundTheObject) {
+TEST(SilhouetteModel, StartsFromABoxAroundTheObject) {
   const Frame f = render({});
   Tracker t;
   t.seed_box({115, 75, 90, 90});  // a user's rectangle dragged around the disc
@@ -415,7 +415,7 @@ TEST(ObjectModel, StartsFromABoxAroundTheObject) {
 // A printed box: a yellow frame around a picture that shows the wall's own colours, and in it a
 // small red figure. A user's point on the figure means the box: the figure is far smaller than
 // any object the finder would take, and the box's frame encloses it.
-TEST(ObjectModel, APointOnADetailOfAPrintStartsTheWholeObject) {
+TEST(SilhouetteModel, APointOnADetailOfAPrintStartsTheWholeObject) {
   constexpr int kW = 320, kH = 240;
   cv::Mat bgr(kH, kW, CV_8UC3, cv::Scalar(205, 210, 215));  // the wall
   const cv::Rect box(70, 60, 180, 120), picture(100, 85, 120, 70), figure(150, 112, 8, 10);

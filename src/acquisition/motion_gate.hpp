@@ -1,0 +1,18 @@
+// The gate of automatic acquisition in both object models: it looks for a new object only on a
+// frame that moved, and says what it waits for otherwise.
+#pragma once
+
+#include <string>
+
+#include "projtrack/image_view.hpp"
+#include "projtrack/motion_detector.hpp"
+
+namespace projtrack {
+
+// Compares `gray` with `detector`'s last frame into `moved`. Empty when at least `min_motion` of
+// the frame changed; else what acquisition waits for (a second frame, or more motion).
+std::string wait_for_motion(MotionDetector& detector, const ImageView& gray,
+                            const MotionDetector::Params& p, double min_motion,
+                            MotionDetector::Motion& moved);
+
+}  // namespace projtrack

@@ -1,0 +1,115 @@
+// The appearance model's step: the object's silhouette on every frame from its colours, its
+// edges and its last silhouette, and the estimator on the silhouette's outline.
+#include <cmath>
+
+#include "core/plausibility.hpp"
+#include "tracker/acquisition_policy.hpp"
+#include "tracker/tracker_impl.hpp"
+
+namespace projtrack {
+
+TrackResult Tracker::Impl::track_appearance(const ColorView& raw, EdgeSource& edges,
+                                            const FrameInput& in) {
+  // The frame as the appearance model reads it: a dim one stretched to a normal exposure. The
+  // model's colours are learned under it, so it is measured only while no object is known and
+  // held while one is: the frame's range changes with what moves through it (a bright object
+  // that leaves a dim room), and the model follows slow changes of the light by itself.
+  if (!state.object.knows_colours())
+    state.exposure = exposure_for(luma_range(raw.luma), in.tp.dim_white, in.tp.full_contrast);
+  ColorView frame = raw;
+  frame.exposure = state.exposure;
+  return state.object.tracking() ? follow_appearance(frame, edges, in)
+                                 : start_appearance(frame, edges, in);
+}
+
+Features Tracker::Impl::estimate_silhouette(const ColorView& frame, const FrameInput& in) {
+  const SilhouetteView s{work.silhouette, state.object.scale(), frame.luma.width,
+                         frame.luma.height};
+  return estimate_on_silhouette(s, state.track().inner, work.estimator(in.method), in.method,
+                                in.params, work.budget, work.on_silhouette, in.trace);
+}
+
+TrackResult Tracker::Impl::start_appearance(const ColorView& frame, EdgeSource& edges,
+                                            const FrameInput& in) {
+  TrackResult r;
+  if (waits_for_user(state, in.tp)) {
+    r.status = TrackStatus::NoInnerPoint;
+    r.detail = kNoInnerPoint;
+    return r;
+  }
+  const int w = frame.luma.width, h = frame.luma.height;
+  const bool seeded = state.track().inner.has_value();
+  AppearanceStart start =
+      start_appearance_track(state, frame, edges, in.tp, work.first, work.silhouette);
+  if (start.found) {
+    const Features f = estimate_silhouette(frame, in);
+    if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
+      state.object.forget_position();
+      stopped(f, in.tp, r);
+      return r;
+    }
+    start.why = why_implausible(f, w, h, in.tp);
+    if (start.why.empty()) {
+      accept(f, w, h, in, start.resumed, r);
+      return r;
+    }
+    state.object.forget_position();
+  } else if (work_stopped()) {  // its edges were cut short
+    stopped(Features{}, in.tp, r);
+    return r;
+  }
+  if (seeded) {  // the user's point: keep trying it for a while, as a refused estimate
+    refuse(std::move(start.why), in.tp, r);
+    return r;
+  }
+  r.status = TrackStatus::Searching;
+  r.detail = std::move(start.why);
+  return r;
+}
+
+TrackResult Tracker::Impl::follow_appearance(const ColorView& frame, EdgeSource& edges,
+                                             const FrameInput& in) {
+  TrackResult r;
+  const int w = frame.luma.width, h = frame.luma.height;
+  const TrackerState::Track& track = state.track();
+  const Point2i hint = track.inner ? *track.inner : Point2i{-1, -1};
+  if (!state.object.find(frame, edges, track.velocity, hint, in.tp.object, work.silhouette)) {
+    if (work_stopped())  // its edges were cut short
+      stopped(Features{}, in.tp, r);
+    else
+      refuse("nothing of the object's colours is left where it was", in.tp, r);
+    return r;
+  }
+  const Features f = estimate_silhouette(frame, in);
+  if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
+    stopped(f, in.tp, r);
+    return r;
+  }
+  if (std::string why = why_refused(f, w, h, in.tp, track.last ? &*track.last : nullptr, HUGE_VAL);
+      !why.empty()) {
+    refuse(std::move(why), in.tp, r);
+    return r;
+  }
+  // An object found without the user's point that the scene's background holds is not reported
+  // as measured (held, as a refused estimate), and dropped after TrackerParams::still_frames
+  // such frames in a row: a static region that motion around it picked (the original system
+  // dropped an object that stopped moving). One the user pointed at is kept, whatever it is.
+  if (!track.seeded && in.tp.still_frames > 0) {
+    switch (judge_stillness(state, frame, f, work.silhouette, in.tp)) {
+      case Stillness::Drop:
+        refuse("the object is part of the scene's background: a static region", in.tp, r,
+               TrackStatus::Lost, true);
+        return r;
+      case Stillness::Holds:
+        refuse("the object does not move and looks like the scene's background", in.tp, r);
+        return r;
+      case Stillness::Moves:
+        break;
+    }
+  }
+  state.object.accept(work.silhouette, in.tp.object);
+  accept(f, w, h, in, false, r);
+  return r;
+}
+
+}  // namespace projtrack
