@@ -1,0 +1,94 @@
+// What the type and range columns of the property table (property_table.def) mean: the GParamSpec
+// a row builds, and how a GValue of that type is read into its Settings member and written back.
+// A type is a tag naming its Range, so that a row's `(min, max)` constructs the range of its type.
+#pragma once
+
+#include <gst/gst.h>
+
+#include "projtrack/geometry.hpp"
+
+namespace projtrack::gst {
+
+template <class T>
+struct Bounds {
+  Bounds(T lo, T hi) : min(lo), max(hi) {}
+  T min, max;
+};
+
+struct Uint {
+  using Range = Bounds<guint>;
+};
+struct Int {
+  using Range = Bounds<gint>;
+};
+struct Double {
+  using Range = Bounds<gdouble>;
+};
+struct Boolean {
+  struct Range {};  // `()`: a boolean has no range
+};
+struct Enum {
+  struct Range {  // `(GST_TYPE_...)`: the enum's GType
+    explicit Range(GType t) : type(t) {}
+    GType type;
+  };
+};
+// A box <x, y, width, height> as a GstValueArray of ints; its range is each coordinate's.
+struct Box {
+  struct Range {
+    Range(gint lo, gint hi) : min(lo), max(hi) {}
+    gint min, max;
+  };
+};
+
+inline GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Uint::Range r,
+                              guint def, GParamFlags flags) {
+  return g_param_spec_uint(name, nick, blurb, r.min, r.max, def, flags);
+}
+inline GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Int::Range r,
+                              gint def, GParamFlags flags) {
+  return g_param_spec_int(name, nick, blurb, r.min, r.max, def, flags);
+}
+inline GParamSpec* param_spec(const char* name, const char* nick, const char* blurb,
+                              Double::Range r, gdouble def, GParamFlags flags) {
+  return g_param_spec_double(name, nick, blurb, r.min, r.max, def, flags);
+}
+inline GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Boolean::Range,
+                              bool def, GParamFlags flags) {
+  return g_param_spec_boolean(name, nick, blurb, def, flags);
+}
+template <class E>
+GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Enum::Range r, E def,
+                       GParamFlags flags) {
+  return g_param_spec_enum(name, nick, blurb, r.type, static_cast<gint>(def), flags);
+}
+// A GstValueArray's default is always the empty array: the row's default must be the empty box.
+inline GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Box::Range r,
+                              const Rect& def, GParamFlags flags) {
+  g_assert(def.empty());
+  GParamSpec* coordinate =
+      g_param_spec_int("coordinate", "Coordinate", "x, y, width or height", r.min, r.max, 0,
+                       static_cast<GParamFlags>(G_PARAM_READWRITE | G_PARAM_STATIC_STRINGS));
+  return gst_param_spec_array(name, nick, blurb, coordinate, flags);
+}
+
+// A GValue of the row's type into its Settings member, and back: the member's own C++ type
+// (an int for a uint property, the library's enum for an enum one).
+inline void from_value(Uint, const GValue* v, int& member) {
+  member = static_cast<int>(g_value_get_uint(v));
+}
+inline void to_value(Uint, GValue* v, int member) { g_value_set_uint(v, member); }
+inline void from_value(Double, const GValue* v, double& member) { member = g_value_get_double(v); }
+inline void to_value(Double, GValue* v, double member) { g_value_set_double(v, member); }
+inline void from_value(Boolean, const GValue* v, bool& member) { member = g_value_get_boolean(v); }
+inline void to_value(Boolean, GValue* v, bool member) { g_value_set_boolean(v, member); }
+template <class E>
+void from_value(Enum, const GValue* v, E& member) {
+  member = static_cast<E>(g_value_get_enum(v));
+}
+template <class E>
+void to_value(Enum, GValue* v, E member) {
+  g_value_set_enum(v, static_cast<gint>(member));
+}
+
+}  // namespace projtrack::gst

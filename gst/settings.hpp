@@ -1,0 +1,38 @@
+// What a user can set on the element (its properties, signals and clicks), as the streaming thread
+// reads it: one copy per frame, taken under the object lock.
+#pragma once
+
+#include "projtrack/edge_detection.hpp"
+#include "projtrack/geometry.hpp"
+#include "projtrack/method.hpp"
+#include "projtrack/params.hpp"
+#include "projtrack/tracker_params.hpp"
+
+namespace projtrack::gst {
+
+inline constexpr Method kDefaultMethod = Method::GapTolerantFilling;
+
+// Which frames post a projtrack message (as facedetect's `updates`).
+enum class Updates {
+  EveryFrame,  // every frame
+  OnChange,    // when the status changes, an object is acquired, or a push completes
+  None,        // never
+};
+
+// Everything a user can set. A default-constructed Settings holds every property's default.
+struct Settings {
+  Method method = kDefaultMethod;
+  Params params;
+  EdgeParams edges;
+  TrackerParams tracker;
+  bool draw = false;
+  bool post_messages = true;
+  Updates updates = Updates::EveryFrame;
+  int seed_x = -1, seed_y = -1;  // the last inner point given (property, signal, click); -1 = none
+  Rect seed_box;                 // the last box given (start-box, track-box); empty = none
+};
+
+// What the streaming thread must do to the track before the next frame.
+enum class SeedCommand { None, Seed, SeedBox, Reset };
+
+}  // namespace projtrack::gst
