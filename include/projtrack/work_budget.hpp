@@ -78,8 +78,6 @@ class WorkBudget {
     if (!ran_out_ && (spent_ > limit_ || pending > limit_ - spent_)) ran_out_ = true;
     return ran_out_ || interrupted();
   }
-  // Marks the budget run out: what is left cannot pay for the work asked.
-  void run_out() { ran_out_ = true; }
   // Takes `units` of work done from the budget.
   void spend(std::uint64_t units) {
     spent_ = units > kUnlimited - spent_ ? kUnlimited : spent_ + units;

@@ -31,6 +31,121 @@ class RoundedDivision {
 
 int floor_div(long long a, int b) { return static_cast<int>(a >= 0 ? a / b : -((-a + b - 1) / b)); }
 
+// A row of 2×2 block means from two frame rows: the common case, in one pass.
+void mean_2x2_row(const std::uint8_t* r0, const std::uint8_t* r1, int w, std::uint8_t* out) {
+  for (int x = 0; x < w; ++x)
+    out[x] =
+        static_cast<std::uint8_t>((r0[2 * x] + r0[2 * x + 1] + r1[2 * x] + r1[2 * x + 1] + 2) >> 2);
+}
+
+// A row of means of s×s blocks (s <= 257) over frame columns [fx0, fx1) and rows [fy0, fy1):
+// column sums first (contiguous adds, which the compiler vectorises; s rows of 255 fit in 16
+// bits), then each block's columns (fewer than s in a last block the frame cuts), so the frame
+// is still read once.
+void mean_blocks_by_columns(const ImageView& luma, int s, int fx0, int fx1, int fy0, int fy1,
+                            std::vector<std::uint16_t>& columns, int w, std::uint8_t* out) {
+  const int span = fx1 - fx0;
+  columns.assign(static_cast<std::size_t>(span), 0);
+  std::uint16_t* col = columns.data();
+  for (int fy = fy0; fy < fy1; ++fy) add_row(luma.row(fy) + fx0, col, span);
+  // A whole block's mean by a multiplication (a division per block cost more than the sums).
+  const int rows = fy1 - fy0;
+  const RoundedDivision whole(static_cast<std::uint32_t>(s * rows));
+  for (int x = 0; x < w; ++x) {
+    const int c0 = x * s, c1 = std::min(span, c0 + s);
+    std::uint32_t sum = 0;
+    for (int k = c0; k < c1; ++k) sum += col[k];
+    const std::uint32_t count = static_cast<std::uint32_t>(std::max(0, c1 - c0) * rows);
+    out[x] = static_cast<std::uint8_t>(c1 - c0 == s ? whole(sum)
+                                       : count > 0  ? (sum + count / 2) / count
+                                                    : 0);
+  }
+}
+
+// The same for larger blocks, whose column sums would not fit in 16 bits: each frame row's blocks
+// summed into `sums`, the first `full` of them whole.
+void mean_blocks_by_rows(const ImageView& luma, int s, int fx0, int fx1, int fy0, int fy1, int full,
+                         std::uint32_t* sums, int w, std::uint8_t* out) {
+  std::fill(sums, sums + w, 0u);
+  for (int fy = fy0; fy < fy1; ++fy) {
+    const std::uint8_t* row = luma.row(fy) + fx0;
+    for (int x = 0; x < full; ++x, row += s) {
+      std::uint32_t sum = 0;
+      for (int k = 0; k < s; ++k) sum += row[k];
+      sums[x] += sum;
+    }
+    for (int x = full, fx = fx0 + full * s; fx < fx1; ++fx) sums[x] += luma.row(fy)[fx];
+  }
+  const int rows = fy1 - fy0;
+  for (int x = 0; x < w; ++x) {
+    const int bx0 = fx0 + x * s, count = (std::min(fx1, bx0 + s) - bx0) * rows;
+    out[x] = static_cast<std::uint8_t>(count > 0 ? (sums[x] + count / 2) / count : 0);
+  }
+}
+
+// The tables that read a value as the exposure `e` would have shown it: luma around the black
+// level, chroma around its neutral 128.
+void exposure_tables(const Exposure& e, std::array<std::uint8_t, 256>& luma,
+                     std::array<std::uint8_t, 256>& chroma) {
+  for (int v = 0; v < 256; ++v) {
+    luma[v] = static_cast<std::uint8_t>(
+        std::clamp<long>(std::lround(e.black + (v - e.black) * e.gain), 0, 255));
+    chroma[v] =
+        static_cast<std::uint8_t>(std::clamp<long>(std::lround(128 + (v - 128) * e.gain), 0, 255));
+  }
+}
+
+// Every byte of p[0, n) read through `table`.
+void apply_table(const std::array<std::uint8_t, 256>& table, std::uint8_t* p, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) p[i] = table[p[i]];
+}
+
+// The work pixels' luma in `rect` (work coordinates at scale s, within the frame): each the mean
+// of its block.
+void average_luma(const ImageView& frame, const Rect& rect, int s,
+                  std::vector<std::uint16_t>& columns, std::uint32_t* sums, std::uint8_t* luma) {
+  const int w = rect.width, h = rect.height, fw = frame.width, fh = frame.height;
+  // Row sums of each block, then the mean: the frame is read once, row by row.
+  const int fx0 = rect.x * s, fx1 = std::min(fw, (rect.x + w) * s);
+  const int full = std::max(0, (fx1 - fx0) / s);  // blocks with all s columns in the frame
+  for (int y = 0; y < h; ++y) {
+    const int fy0 = (rect.y + y) * s, fy1 = std::min(fh, fy0 + s);
+    std::uint8_t* out = luma + static_cast<std::size_t>(y) * w;
+    if (s == 1)
+      std::copy_n(frame.row(fy0) + fx0, w, out);
+    else if (s == 2 && fy1 - fy0 == 2 && full == w)
+      mean_2x2_row(frame.row(fy0) + fx0, frame.row(fy0 + 1) + fx0, w, out);
+    else if (s <= 257)
+      mean_blocks_by_columns(frame, s, fx0, fx1, fy0, fy1, columns, w, out);
+    else
+      mean_blocks_by_rows(frame, s, fx0, fx1, fy0, fy1, full, sums, w, out);
+  }
+}
+
+// The work pixels' chroma in `rect`: each block's centre sample.
+void sample_chroma(const ColorView& frame, const Rect& rect, int s,
+                   std::vector<std::ptrdiff_t>& offsets, std::uint8_t* u, std::uint8_t* v) {
+  const int w = rect.width, h = rect.height;
+  const int fw = frame.luma.width, fh = frame.luma.height;
+  // The chroma offsets of a row's blocks are the same on every row.
+  const ChromaView& c = frame.chroma;
+  offsets.resize(static_cast<std::size_t>(w));
+  for (int x = 0; x < w; ++x) {
+    const int cx = std::min(fw - 1, (rect.x + x) * s + s / 2);
+    offsets[x] = static_cast<std::ptrdiff_t>(cx >> c.shift_x) * c.pixel_stride;
+  }
+  for (int y = 0; y < h; ++y) {
+    const int cy = std::min(fh - 1, (rect.y + y) * s + s / 2);
+    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(cy >> c.shift_y) * c.stride;
+    std::uint8_t* uo = u + static_cast<std::size_t>(y) * w;
+    std::uint8_t* vo = v + static_cast<std::size_t>(y) * w;
+    for (int x = 0; x < w; ++x) {
+      uo[x] = c.u[row + offsets[x]];
+      vo[x] = c.v[row + offsets[x]];
+    }
+  }
+}
+
 }  // namespace
 
 int work_scale(double pixels, double target) {
@@ -68,97 +183,19 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
   view_ = {};
   if (n == 0) return;
   std::uint8_t* luma = planes_.data();
-  std::uint32_t* sums = sums_.data();
-  // Row sums of each block, then the mean: the frame is read once, row by row.
-  const int fx0 = rect_.x * s, fx1 = std::min(fw, (rect_.x + w) * s);
-  const int full = std::max(0, (fx1 - fx0) / s);  // blocks with all s columns in the frame
-  for (int y = 0; y < h; ++y) {
-    const int fy0 = (rect_.y + y) * s, fy1 = std::min(fh, fy0 + s);
-    std::uint8_t* out = luma + static_cast<std::size_t>(y) * w;
-    if (s == 1) {
-      std::copy_n(frame.luma.row(fy0) + fx0, w, out);
-      continue;
-    }
-    if (s == 2 && fy1 - fy0 == 2 && full == w) {  // the common case, in one pass
-      const std::uint8_t* r0 = frame.luma.row(fy0) + fx0;
-      const std::uint8_t* r1 = frame.luma.row(fy0 + 1) + fx0;
-      for (int x = 0; x < w; ++x)
-        out[x] = static_cast<std::uint8_t>(
-            (r0[2 * x] + r0[2 * x + 1] + r1[2 * x] + r1[2 * x + 1] + 2) >> 2);
-      continue;
-    }
-    if (s <= 257) {
-      // Column sums first (contiguous adds, which the compiler vectorises; s rows of 255 fit in
-      // 16 bits), then each block's columns (fewer than s in a last block the frame cuts): the
-      // frame is still read once.
-      const int span = fx1 - fx0;
-      columns_.assign(static_cast<std::size_t>(span), 0);
-      std::uint16_t* col = columns_.data();
-      for (int fy = fy0; fy < fy1; ++fy) add_row(frame.luma.row(fy) + fx0, col, span);
-      // A whole block's mean by a multiplication (a division per block cost more than the sums).
-      const int rows = fy1 - fy0;
-      const RoundedDivision whole(static_cast<std::uint32_t>(s * rows));
-      for (int x = 0; x < w; ++x) {
-        const int c0 = x * s, c1 = std::min(span, c0 + s);
-        std::uint32_t sum = 0;
-        for (int k = c0; k < c1; ++k) sum += col[k];
-        const std::uint32_t count = static_cast<std::uint32_t>(std::max(0, c1 - c0) * rows);
-        out[x] = static_cast<std::uint8_t>(c1 - c0 == s ? whole(sum)
-                                           : count > 0  ? (sum + count / 2) / count
-                                                        : 0);
-      }
-      continue;
-    }
-    std::fill(sums, sums + w, 0u);
-    for (int fy = fy0; fy < fy1; ++fy) {
-      const std::uint8_t* row = frame.luma.row(fy) + fx0;
-      for (int x = 0; x < full; ++x, row += s) {
-        std::uint32_t sum = 0;
-        for (int k = 0; k < s; ++k) sum += row[k];
-        sums[x] += sum;
-      }
-      for (int x = full, fx = fx0 + full * s; fx < fx1; ++fx) sums[x] += frame.luma.row(fy)[fx];
-    }
-    const int rows = fy1 - fy0;
-    for (int x = 0; x < w; ++x) {
-      const int bx0 = fx0 + x * s, count = (std::min(fx1, bx0 + s) - bx0) * rows;
-      out[x] = static_cast<std::uint8_t>(count > 0 ? (sums[x] + count / 2) / count : 0);
-    }
-  }
+  average_luma(frame.luma, rect_, s, columns_, sums_.data(), luma);
   // A dim frame read as a brighter exposure would have shown it (ColorView::exposure).
   const Exposure& e = frame.exposure;
   if (!e.identity()) {
-    for (int v = 0; v < 256; ++v) {
-      luma_lut_[v] = static_cast<std::uint8_t>(
-          std::clamp<long>(std::lround(e.black + (v - e.black) * e.gain), 0, 255));
-      chroma_lut_[v] = static_cast<std::uint8_t>(
-          std::clamp<long>(std::lround(128 + (v - 128) * e.gain), 0, 255));
-    }
-    for (std::size_t i = 0; i < n; ++i) luma[i] = luma_lut_[luma[i]];
+    exposure_tables(e, luma_lut_, chroma_lut_);
+    apply_table(luma_lut_, luma, n);
   }
   view_.luma = ImageView(luma, w, h, w);
   if (!chroma) return;
   std::uint8_t* u = luma + n;
   std::uint8_t* v = u + n;
-  // Each block's centre sample: the chroma offsets of a row's blocks are the same on every row.
-  const ChromaView& c = frame.chroma;
-  offsets_.resize(static_cast<std::size_t>(w));
-  for (int x = 0; x < w; ++x) {
-    const int cx = std::min(fw - 1, (rect_.x + x) * s + s / 2);
-    offsets_[x] = static_cast<std::ptrdiff_t>(cx >> c.shift_x) * c.pixel_stride;
-  }
-  for (int y = 0; y < h; ++y) {
-    const int cy = std::min(fh - 1, (rect_.y + y) * s + s / 2);
-    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(cy >> c.shift_y) * c.stride;
-    std::uint8_t* uo = u + static_cast<std::size_t>(y) * w;
-    std::uint8_t* vo = v + static_cast<std::size_t>(y) * w;
-    for (int x = 0; x < w; ++x) {
-      uo[x] = c.u[row + offsets_[x]];
-      vo[x] = c.v[row + offsets_[x]];
-    }
-  }
-  if (!e.identity())
-    for (std::size_t i = 0; i < 2 * n; ++i) u[i] = chroma_lut_[u[i]];  // u, then v just after
+  sample_chroma(frame, rect_, s, offsets_, u, v);
+  if (!e.identity()) apply_table(chroma_lut_, u, 2 * n);  // u, then v just after
   view_.chroma = {u, v, w, 1, 0, 0};
 }
 

@@ -56,8 +56,6 @@ PROJTRACK_VECTOR_CLONES void gradient_row(const std::uint8_t* __restrict__ up,
   if (w > 1) edge(w - 1);
 }
 
-}  // namespace
-
 // What it costs (WorkBudget units): a pixel's gradient and a quiet stretch of the suppression
 // are vectorised; a pixel above the low threshold takes the suppression's branches, which the
 // processor mispredicts on textured content (noise costs many times a frame of smooth shading,
@@ -67,22 +65,166 @@ constexpr std::uint64_t kCostPerStrongGradient = 12;
 constexpr std::uint64_t kCostPerCandidate = 4;
 constexpr int kRowsPerCheckpoint = 16;
 
+// A threshold as a level of the integer L1 norm: floored, as cv::Canny does. L1 norms never
+// exceed 8 · 255, so larger thresholds all mean "above every norm"; NaN and anything below -1 read
+// as -1.
+int gradient_level(double t) {
+  return t >= -1.0 ? static_cast<int>(std::floor(std::min(t, 4096.0))) : -1;
+}
+
+// Gradients live in a ring of three rows (the row being suppressed and its two neighbours), so
+// they stay in cache; only the map is frame-sized. Each row has one border pixel each side, of
+// zero magnitude.
+struct GradientRing {
+  std::int16_t *dx, *dy, *mag;
+  std::ptrdiff_t stride;
+
+  // Where row y (-1 to h) lies in the ring, past its left border pixel.
+  std::ptrdiff_t at(int y) const { return ((y + 3) % 3) * stride + 1; }
+  // Row y of the image into the ring, or zeros outside the image.
+  void compute(const ImageView& src, int y, int low) const {
+    const int w = src.width, h = src.height;
+    std::int16_t* m = mag + at(y);
+    m[-1] = m[w] = 0;
+    if (y < 0 || y >= h) {
+      std::fill(m, m + w, 0);
+      return;
+    }
+    gradient_row(src.row(std::max(y - 1, 0)), src.row(y), src.row(std::min(y + 1, h - 1)), w,
+                 dx + at(y), dy + at(y), m, low);
+  }
+};
+
+// Candidates of the hysteresis: map offsets of the strong edges (above `high`) still to extend,
+// and of the weak ones (above `low` only).
+struct Candidates {
+  std::vector<std::int32_t>& strong;
+  std::vector<std::int32_t>& weak;
+};
+
+// Non-maximum suppression of row y across the gradient's direction (one of four sectors; tan
+// 22.5° in 15-bit fixed point), the same comparisons as OpenCV's, so ties resolve identically.
+// Marks the row of the map (`map_row` is its offset, past the border pixel) and adds its peaks
+// to the candidates; returns how many of its pixels are above `low`.
+std::uint64_t suppress_row(const GradientRing& g, int y, int w, int low, int high,
+                           std::uint8_t* map, std::ptrdiff_t map_row, Candidates& out) {
+  constexpr int kShift = 15;
+  constexpr int kTan22 = 13573;  // round(tan(22.5°) · 2^15)
+  const std::int16_t* up = g.mag + g.at(y - 1);
+  const std::int16_t* m = g.mag + g.at(y);
+  const std::int16_t* down = g.mag + g.at(y + 1);
+  const std::int16_t* gx = g.dx + g.at(y);
+  const std::int16_t* gy = g.dy + g.at(y);
+  std::uint8_t* row = map + map_row;
+  row[-1] = row[w] = kNot;
+  std::uint64_t strong = 0;
+  for (int x = 0; x < w; ++x) {
+    // Most pixels are far below `low` (stored as 0): skip eight at a time.
+    if ((x & 7) == 0 && x + 8 <= w) {
+      std::uint64_t a, b;
+      std::memcpy(&a, m + x, 8);
+      std::memcpy(&b, m + x + 4, 8);
+      if ((a | b) == 0) {
+        std::memset(row + x, kNot, 8);
+        x += 7;
+        continue;
+      }
+    }
+    const int v = m[x];
+    std::uint8_t mark = kNot;
+    if (v > low) {
+      ++strong;
+      const int ax = std::abs(int{gx[x]}), ay = std::abs(int{gy[x]}) << kShift;
+      const int tg22 = ax * kTan22;
+      bool peak;
+      if (ay < tg22) {
+        peak = v > m[x - 1] && v >= m[x + 1];
+      } else if (ay > tg22 + (ax << (kShift + 1))) {
+        peak = v > up[x] && v >= down[x];
+      } else {
+        const int s = (gx[x] ^ gy[x]) < 0 ? -1 : 1;
+        peak = v > up[x - s] && v > down[x + s];
+      }
+      if (peak) {
+        const std::int32_t at = static_cast<std::int32_t>(map_row + x);
+        mark = v > high ? kEdge : kMaybe;
+        (mark == kEdge ? out.strong : out.weak).push_back(at);
+      }
+    }
+    row[x] = mark;
+  }
+  return strong;
+}
+
+// What `rows` rows of width w cost, `strong` of their pixels above the low threshold.
+std::uint64_t rows_cost(int rows, int w, std::uint64_t strong) {
+  return static_cast<std::uint64_t>(rows) * w / kScannedPixelsPerCost +
+         strong * kCostPerStrongGradient;
+}
+
+// Every row of the map (of row stride ms, with its border rows) marked by the suppression. With a
+// budget, the rows' work is spent every kRowsPerCheckpoint rows; once it runs out, the rows left
+// are "not an edge" and the answer is false: the map is incomplete.
+bool suppress_non_maxima(const ImageView& src, int low, int high, const GradientRing& ring,
+                         std::uint8_t* map, std::ptrdiff_t ms, Candidates& out,
+                         WorkBudget* budget) {
+  const int w = src.width, h = src.height;
+  std::memset(map, kNot, ms);
+  std::memset(map + ms * (h + 1), kNot, ms);
+  ring.compute(src, -1, low);
+  ring.compute(src, 0, low);
+  std::uint64_t strong = 0;  // pixels above `low` since the last checkpoint
+  for (int y = 0; y < h; ++y) {
+    if (budget && y % kRowsPerCheckpoint == 0) {
+      budget->spend(rows_cost(std::min(y, kRowsPerCheckpoint), w, strong));
+      strong = 0;
+      if (budget->exhausted()) {
+        for (int r = y; r < h; ++r) std::memset(map + ms * (r + 1), kNot, ms);
+        return false;
+      }
+    }
+    ring.compute(src, y + 1, low);
+    strong += suppress_row(ring, y, w, low, high, map, ms * (y + 1) + 1, out);
+  }
+  if (budget) {  // the rows since the last checkpoint
+    const int last_rows = h % kRowsPerCheckpoint == 0 ? kRowsPerCheckpoint : h % kRowsPerCheckpoint;
+    budget->spend(rows_cost(last_rows, w, strong));
+  }
+  return true;
+}
+
+// Hysteresis: every candidate 8-connected to a strong edge becomes an edge (depth first from the
+// strong ones, `out.strong` is emptied); the other weak ones are not edges.
+void hysteresis(std::uint8_t* map, std::ptrdiff_t ms, Candidates& out) {
+  const std::ptrdiff_t around[8] = {-1, 1, -ms - 1, -ms, -ms + 1, ms - 1, ms, ms + 1};
+  std::vector<std::int32_t>& stack = out.strong;
+  while (!stack.empty()) {
+    const std::ptrdiff_t p = stack.back();
+    stack.pop_back();
+    for (std::ptrdiff_t d : around) {
+      if (map[p + d] == kMaybe) {
+        map[p + d] = kEdge;
+        stack.push_back(static_cast<std::int32_t>(p + d));
+      }
+    }
+  }
+  for (const std::int32_t p : out.weak)
+    if (map[p] == kMaybe) map[p] = kNot;
+}
+
+}  // namespace
+
 ImageView CannyDetector::detect(const ImageView& src, double low_threshold, double high_threshold,
                                 WorkBudget* budget) {
   const int w = src.width, h = src.height;
   if (!src.valid()) return {};
   if (low_threshold > high_threshold) std::swap(low_threshold, high_threshold);
-  // L1 norms never exceed 8 · 255, so larger thresholds all mean "above every norm".
   // Offsets into the map are 32-bit: refuse what would not fit (over 2^31 pixels).
   if ((static_cast<double>(w) + 2) * (static_cast<double>(h) + 2) > 2147483647.0) return {};
-  auto level = [](double t) {  // NaN and anything below -1 read as -1
-    return t >= -1.0 ? static_cast<int>(std::floor(std::min(t, 4096.0))) : -1;
-  };
-  const int low = level(low_threshold), high = level(high_threshold);
+  const int low = gradient_level(low_threshold), high = gradient_level(high_threshold);
 
-  // Gradients live in a ring of three rows (the row being suppressed and its two neighbours), so
-  // they stay in cache; only the map is frame-sized. Rows of the ring and of the map have one
-  // border pixel each side: a zero magnitude, and "not an edge".
+  // Rows of the ring and of the map have one border pixel each side: a zero magnitude, and "not
+  // an edge".
   const std::ptrdiff_t ms = w + 2;
   if (mag_.size() < static_cast<std::size_t>(3 * ms)) {
     mag_.resize(3 * ms);
@@ -91,117 +233,20 @@ ImageView CannyDetector::detect(const ImageView& src, double low_threshold, doub
   }
   const std::size_t nb = static_cast<std::size_t>(ms) * (h + 2);
   if (map_.size() < nb) map_.resize(nb);
-  auto ring = [&](std::vector<std::int16_t>& v, int y) {
-    return v.data() + ((y + 3) % 3) * ms + 1;
-  };
-  auto gradient = [&](int y) {  // row y into the ring, or zeros outside the image
-    std::int16_t* m = ring(mag_, y);
-    m[-1] = m[w] = 0;
-    if (y < 0 || y >= h) {
-      std::fill(m, m + w, 0);
-      return;
-    }
-    gradient_row(src.row(std::max(y - 1, 0)), src.row(y), src.row(std::min(y + 1, h - 1)), w,
-                 ring(dx_, y), ring(dy_, y), m, low);
-  };
-
-  // Non-maximum suppression across the gradient's direction (one of four sectors; tan 22.5° in
-  // 15-bit fixed point), the same comparisons as OpenCV's, so ties resolve identically.
-  constexpr int kShift = 15;
-  constexpr int kTan22 = 13573;  // round(tan(22.5°) · 2^15)
   std::uint8_t* map = map_.data();
-  std::memset(map, kNot, ms);
-  std::memset(map + ms * (h + 1), kNot, ms);
+  const GradientRing ring{dx_.data(), dy_.data(), mag_.data(), ms};
   stack_.clear();
   maybes_.clear();
-  gradient(-1);
-  gradient(0);
-  std::uint64_t strong = 0, cost = 0;  // pixels above `low`; units not yet spent
-  bool stopped = false;
-  for (int y = 0; y < h; ++y) {
-    if (budget && y % kRowsPerCheckpoint == 0) {
-      cost +=
-          static_cast<std::uint64_t>(std::min(y, kRowsPerCheckpoint)) * w / kScannedPixelsPerCost +
-          strong * kCostPerStrongGradient;
-      strong = 0;
-      budget->spend(cost);
-      cost = 0;
-      if (budget->exhausted()) {  // the rows left: not an edge, and no hysteresis
-        for (int r = y; r < h; ++r) std::memset(map + ms * (r + 1), kNot, ms);
-        stopped = true;
-        break;
-      }
-    }
-    gradient(y + 1);
-    const std::int16_t* up = ring(mag_, y - 1);
-    const std::int16_t* m = ring(mag_, y);
-    const std::int16_t* down = ring(mag_, y + 1);
-    const std::int16_t* gx = ring(dx_, y);
-    const std::int16_t* gy = ring(dy_, y);
-    std::uint8_t* row = map + ms * (y + 1) + 1;
-    row[-1] = row[w] = kNot;
-    for (int x = 0; x < w; ++x) {
-      // Most pixels are far below `low` (stored as 0): skip eight at a time.
-      if ((x & 7) == 0 && x + 8 <= w) {
-        std::uint64_t a, b;
-        std::memcpy(&a, m + x, 8);
-        std::memcpy(&b, m + x + 4, 8);
-        if ((a | b) == 0) {
-          std::memset(row + x, kNot, 8);
-          x += 7;
-          continue;
-        }
-      }
-      const int v = m[x];
-      std::uint8_t mark = kNot;
-      if (v > low) {
-        ++strong;
-        const int ax = std::abs(int{gx[x]}), ay = std::abs(int{gy[x]}) << kShift;
-        const int tg22 = ax * kTan22;
-        bool peak;
-        if (ay < tg22) {
-          peak = v > m[x - 1] && v >= m[x + 1];
-        } else if (ay > tg22 + (ax << (kShift + 1))) {
-          peak = v > up[x] && v >= down[x];
-        } else {
-          const int s = (gx[x] ^ gy[x]) < 0 ? -1 : 1;
-          peak = v > up[x - s] && v > down[x + s];
-        }
-        if (peak) {
-          const std::int32_t at = static_cast<std::int32_t>(ms * (y + 1) + 1 + x);
-          mark = v > high ? kEdge : kMaybe;
-          (mark == kEdge ? stack_ : maybes_).push_back(at);
-        }
-      }
-      row[x] = mark;
-    }
-  }
+  Candidates candidates{stack_, maybes_};
 
-  if (budget && !stopped) {
-    // The rows since the last checkpoint, done; the hysteresis, done only if it can be paid.
-    const int last_rows = h % kRowsPerCheckpoint == 0 ? kRowsPerCheckpoint : h % kRowsPerCheckpoint;
-    budget->spend(static_cast<std::uint64_t>(last_rows) * w / kScannedPixelsPerCost +
-                  strong * kCostPerStrongGradient);
-    const std::uint64_t hysteresis = (stack_.size() + maybes_.size()) * kCostPerCandidate;
-    stopped = budget->exhausted(hysteresis);
-    if (!stopped) budget->spend(hysteresis);
+  bool complete = suppress_non_maxima(src, low, high, ring, map, ms, candidates, budget);
+  if (budget && complete) {  // the hysteresis, done only if it can be paid
+    const std::uint64_t hysteresis_cost = (stack_.size() + maybes_.size()) * kCostPerCandidate;
+    complete = !budget->exhausted(hysteresis_cost);
+    if (complete) budget->spend(hysteresis_cost);
   }
-  if (stopped) stack_.clear();  // an incomplete map: the weak candidates are dropped below
-
-  // Hysteresis: every candidate 8-connected to an edge is an edge; the others are not.
-  const std::ptrdiff_t around[8] = {-1, 1, -ms - 1, -ms, -ms + 1, ms - 1, ms, ms + 1};
-  while (!stack_.empty()) {
-    const std::ptrdiff_t p = stack_.back();
-    stack_.pop_back();
-    for (std::ptrdiff_t d : around) {
-      if (map[p + d] == kMaybe) {
-        map[p + d] = kEdge;
-        stack_.push_back(static_cast<std::int32_t>(p + d));
-      }
-    }
-  }
-  for (const std::int32_t p : maybes_)
-    if (map[p] == kMaybe) map[p] = kNot;
+  if (!complete) stack_.clear();  // an incomplete map: the weak candidates are dropped below
+  hysteresis(map, ms, candidates);
   return ImageView(map + ms + 1, w, h, ms);
 }
 
