@@ -6,15 +6,6 @@ namespace projtrack {
 
 namespace {
 
-// `src` copied into `dst`, which covers `r`: what lies outside r is dropped, what r adds is unset.
-void embed(const Mask& src, const Rect& r, Mask& dst) {
-  dst.reset(r);
-  const Rect common = src.rect() & r;
-  for (int y = common.y; y < common.bottom(); ++y)
-    std::copy_n(src.row(y - src.rect().y) + (common.x - src.rect().x), common.width,
-                dst.row(y - r.y) + (common.x - r.x));
-}
-
 // Each edge-bounded region's sum of likelihoods (sums[0]: the edge pixels'), and whether the
 // border of the area cuts it.
 void sum_regions(const RegionLabels& regions, const ImageView& like,

@@ -7,15 +7,6 @@ namespace projtrack {
 
 namespace {
 
-// `src` copied into a mask covering `r` (what lies outside r is dropped, what r adds is unset).
-void embed(const Mask& src, const Rect& r, Mask& dst) {
-  dst.reset(r);
-  const Rect common = src.rect() & r;
-  for (int y = common.y; y < common.bottom(); ++y)
-    std::copy_n(src.row(y - src.rect().y) + (common.x - src.rect().x), common.width,
-                dst.row(y - r.y) + (common.x - r.x));
-}
-
 Rect grown(const Rect& r, int by) {
   return {r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by};
 }

@@ -89,6 +89,14 @@ MaskMoments moments(const Mask& m) {
   return out;
 }
 
+void embed(const Mask& src, const Rect& r, Mask& dst) {
+  dst.reset(r);
+  const Rect common = src.rect() & r;
+  for (int y = common.y; y < common.bottom(); ++y)
+    std::copy_n(src.row(y - src.rect().y) + (common.x - src.rect().x), common.width,
+                dst.row(y - r.y) + (common.x - r.x));
+}
+
 void rescale(const Mask& src, int from, int to, Mask& dst) {
   from = std::max(1, from);
   to = std::max(1, to);

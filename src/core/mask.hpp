@@ -52,6 +52,9 @@ struct MaskMoments {
 };
 MaskMoments moments(const Mask& m);
 
+// `src` copied into a mask covering `r` (what lies outside r is dropped, what r adds is unset).
+void embed(const Mask& src, const Rect& r, Mask& dst);
+
 // `src`, a mask in work coordinates at scale `from` (see WorkFrame), at scale `to`: each pixel
 // takes the value of the `from` pixel under its centre.
 void rescale(const Mask& src, int from, int to, Mask& dst);
