@@ -5,7 +5,7 @@ or (--clip cup, --clip box) a real held object in one of opencv-doc's clips.
 Writes under --out (default out/):
   demo.webm  the video with projtrack's overlay (draw=true); <clip>.webm for a real clip
   demo.csv   one row per frame: projtrack's features next to the true centroid and area
-             (<clip>.csv; the truth of the real clips is bench/truth/'s)
+             (<clip>.csv; the truth of the real clips is bench/real/truth/'s)
 and prints a summary. Needs the plugin on GST_PLUGIN_PATH (./run demo sets it) and Debian's
 python3-gst-1.0 and python3-numpy; the real clips need opencv-doc and gstreamer1.0-libav.
 """
@@ -84,7 +84,7 @@ def truth(mask):
 
 TRACKING = {'ok', 'reached-border', 'covers-frame'}
 OPENCV_DOC = '/usr/share/doc/opencv-doc/opencv4/html'
-TRUTH = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'bench', 'truth')
+TRUTH = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'bench', 'real', 'truth')
 
 
 def collect(pipeline, truths):

@@ -1,6 +1,7 @@
 // Adversarial content: frames made to cost the estimators and the tracker as much work as
-// possible (issue 16), shared by the tests (tests/tracker/test_work_budget.cpp) and the speed benchmark
-// (bench/speed.cpp). Every frame is fresh: the same kind gives another pattern on every index.
+// possible (issue 16), shared by the tests (tests/tracker/test_work_budget.cpp) and the speed
+// benchmark (bench/speed/main.cpp). Every frame is fresh: the same kind gives another pattern on
+// every index.
 #pragma once
 
 #include <iterator>

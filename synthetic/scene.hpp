@@ -16,7 +16,7 @@ namespace projtrack::synthetic {
 
 enum class Object { Sphere, Hand };
 
-// The scene model's constants (bench/main.cpp writes them into meta.json for the report).
+// The scene model's constants (bench/paper/main.cpp writes them into meta.json for the report).
 struct SceneModel {
   static constexpr double kBlurSigma = 0.8;     // optical blur, px, at every resolution
   static constexpr double kNoiseSigma = 3.0;    // sensor noise, grey levels

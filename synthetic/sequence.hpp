@@ -20,7 +20,7 @@ struct SequenceStep {
 };
 
 // A frame is tracked sanely when the centroid is within this share of √(true area) of the truth
-// and the area within this share of the true area (bench/main.cpp records them in meta.json).
+// and the area within this share of the true area (bench/paper/main.cpp records them in meta.json).
 inline constexpr double kSaneCentroid = 0.1;
 inline constexpr double kSaneArea = 0.35;
 

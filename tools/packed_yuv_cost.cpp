@@ -4,14 +4,11 @@
 // projtrack in GstHarness; the gather timed alone on the same YUY2 frames, with the library's
 // gather_component() and with the loop of a variable pixel stride it replaced, beside a GRAY8
 // frame copy. Every frame is a buffer of its own, so the gathers read memory as the element does
-// (not a frame left in the cache). Medians over 5 rounds of frames 5-59. Not built by meson; from
-// a build folder made by ./run build:
+// (not a frame left in the cache). Medians over 5 rounds of frames 5-59. Built with the tools
+// option (tools/meson.build) beside the plugin, in a build folder made by ./run build:
 //
-//   c++ -O3 -std=c++17 tools/packed_yuv_cost.cpp -o build/packed_yuv_cost -Isrc -Isynthetic \
-//       $(pkg-config --cflags gstreamer-check-1.0 gstreamer-video-1.0 opencv4) \
-//       build/synthetic/libprojtrack_synthetic.a build/src/libprojtrack.a \
-//       $(pkg-config --libs gstreamer-check-1.0 gstreamer-video-1.0 opencv4)
-//   GST_PLUGIN_PATH=$PWD/build/gst build/packed_yuv_cost
+//   meson configure build -Dtools=enabled && meson compile -C build
+//   GST_PLUGIN_PATH=$PWD/build/gst build/tools/packed_yuv_cost
 #include <gst/check/gstharness.h>
 #include <gst/gst.h>
 #include <gst/video/video.h>

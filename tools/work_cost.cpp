@@ -1,17 +1,15 @@
-// What a unit of work (include/projtrack/work_budget.hpp) costs in time, method by method, beside what a pixel
-// visited (Features::pixels_visited) costs: the check of the budget's weights. Every estimator
-// runs on the adversarial set at 1920×1080 (synthetic/adversarial.hpp: each frame read as an edge
-// map, and its Canny edges), from the frame's centre and from a point off it, with its default
-// parameters and with heavy ones (more rays, a finer grid); Canny runs on every frame too. Each
-// case is timed 3 times, the least kept; only cases of at least 200 000 units count, where fixed
-// costs do not matter. The weights are right when every method's nanoseconds per unit lie within
-// a few times of each other, where its nanoseconds per pixel visited need not. Not built by meson;
-// from a build folder made by ./run build:
+// What a unit of work (include/projtrack/work_budget.hpp) costs in time, method by method, beside
+// what a pixel visited (Features::pixels_visited) costs: the check of the budget's weights. Every
+// estimator runs on the adversarial set at 1920×1080 (synthetic/adversarial.hpp: each frame read as
+// an edge map, and its Canny edges), from the frame's centre and from a point off it, with its
+// default parameters and with heavy ones (more rays, a finer grid); Canny runs on every frame too.
+// Each case is timed 3 times, the least kept; only cases of at least 200 000 units count, where
+// fixed costs do not matter. The weights are right when every method's nanoseconds per unit lie
+// within a few times of each other, where its nanoseconds per pixel visited need not. Built with
+// the tools option (tools/meson.build), in a build folder made by ./run build:
 //
-//   c++ -O3 -std=c++17 tools/work_cost.cpp -o build/work_cost -Isrc -Isynthetic \
-//       $(pkg-config --cflags opencv4) build/synthetic/libprojtrack_synthetic.a \
-//       build/src/libprojtrack.a $(pkg-config --libs opencv4)
-//   build/work_cost
+//   meson configure build -Dtools=enabled && meson compile -C build
+//   build/tools/work_cost
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

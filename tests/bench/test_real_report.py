@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""bench/real_report.py on small fixture data written here: each target's verdict follows the
+"""bench/real/report.py on small fixture data written here: each target's verdict follows the
 data (it flips when the data does); a missing clip, run or number (NaN) makes a target "not
 measured", never "met"; sizes, goals and the variants' settings are rendered from the data and
 the generator's constants; "Why it fails" puts every missed frame in the category its
@@ -194,7 +194,7 @@ nan_speed = [dict(r, median_us='nan') if r['what'] == 'frame copy' and r['clip']
              for r in base_speed()]
 report, text = render('nan-copy', speed=nan_speed)
 assert verdicts(report)[7] == rr.MISSING and 'nan' not in text.lower()
-# A held clip missing from the run (bench/truth labels it): the seeded and no-seed targets, and
+# A held clip missing from the run (bench/real/truth labels it): the seeded and no-seed targets, and
 # the speed ones over the held clips, are not measured.
 only_cup = [r for r in base_runs() if r['clip'] != 'box']
 meta = base_meta()
@@ -223,7 +223,7 @@ assert verdicts(report)[5] == rr.MISSING, verdicts(report)
 summary = report.summary()
 assert '(1 not measured)' in summary and 'met' in summary, summary
 assert rr.worst([0.9, float('nan')]) != rr.worst([0.9, float('nan')])  # NaN, never 0.9
-assert rr.verdict(math.nan, lambda v: True) == rr.MISSING
+assert rr.verdict([math.nan], lambda v: True, words=rr.TARGET) == rr.MISSING
 
 # Why it fails: every missed frame in the category its measurement fits.
 t = truth_rows()[0]

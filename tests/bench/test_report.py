@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""bench/report.py on small fixture data written here: each verdict follows the data (it flips
+"""bench/paper/report.py on small fixture data written here: each verdict follows the data (it flips
 when the data does), and a verdict whose numbers are missing (NaN) reads "not measured", never
 "holds". The whole document renders from the fixtures without a NaN in it.
 

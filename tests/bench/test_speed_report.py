@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""bench/speed_report.py on small fixture data written here: each target's verdict follows the
+"""bench/speed/report.py on small fixture data written here: each target's verdict follows the
 data (it flips when the data does), a target whose numbers are missing or NaN reads "not
 measured", never "met", the date is the one recorded with the data, and the Canny and blur
 comparison is rendered from its measurements.

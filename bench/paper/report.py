@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Turns projtrack-bench's CSVs into docs/benchmarks.md, its plots and the verdicts.
 
-    bench/report.py RESULTS_DIR MARKDOWN_FILE
+    bench/paper/report.py RESULTS_DIR MARKDOWN_FILE
 
 RESULTS_DIR holds methods.csv, runs.csv, scenes.csv, sweep.csv, variants.csv, edges.csv,
 acquisition.csv, meta.json and figures/ (written by projtrack-bench); the plots are written to
@@ -10,17 +10,16 @@ verdict whose numbers are missing reads "not measured", never "holds".
 """
 import csv
 import gzip
-import json
 import math
 import os
 import sys
 from collections import defaultdict
 
-import matplotlib
+import numpy as np
 
-matplotlib.use('Agg')
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'common'))
+from report_kit import (DASH, MISSING, fmt_num, fmt_pct, fmt_pct_g, frame_size,  # noqa: E402
+                        load_meta, load_methods, missing, plt, span, verdict)
 
 # The methods and their traits are read from RESULTS_DIR/methods.csv (the library's table of
 # methods, written by projtrack-bench); the claims and targets below name the methods they are
@@ -36,7 +35,6 @@ FAR_LESS = 0.5       # C5: "far less": at most this share of pixel-filling's lea
 G2_WITHIN = 0.01     # G2: area error within this of pixel-filling's
 G3_FACTOR = 2        # G3: cost at most this many times grid-filling's
 TIE = 0.02           # the sweep: a cheaper value within this share of the best score wins
-MISSING = 'not measured'
 PEERS = ['opencv-floodfill', 'opencv-components']
 NUMERIC = ['width', 'height', 'scale', 'gap_rate', 'acquired_frame', 'correct', 'sane_after',
            'spurious', 'instance', 'seed_x', 'seed_y', 'centroid_x', 'centroid_y', 'area',
@@ -63,12 +61,6 @@ def load(path):
     return rows
 
 
-def load_methods(results):
-    """The table of methods, in the library's order: name, family, iterative, from_paper, trace."""
-    with open(os.path.join(results, 'methods.csv')) as f:
-        return list(csv.DictReader(f))
-
-
 def select(rows, **kw):
     return [r for r in rows if all(r[k] == v for k, v in kw.items())]
 
@@ -83,36 +75,13 @@ def mean(values):
     return float(np.mean(v)) if v else math.nan
 
 
+# This document's numbers: one decimal unless told, a dash in a cell not measured.
 def pct(x, digits=1):
-    return '–' if math.isnan(x) else f'{100 * x:.{digits}f} %'
-
-
-def pct_g(x):
-    """A share as a percentage with only the digits it has."""
-    return f'{100 * x:g} %'
+    return fmt_pct(x, digits, DASH)
 
 
 def num(x, digits=1):
-    return '–' if math.isnan(x) else f'{x:.{digits}f}'
-
-
-def missing(*values):
-    """True when a number a verdict rests on was not measured (None or NaN)."""
-    return any(v is None or (isinstance(v, float) and math.isnan(v)) for v in values)
-
-
-def verdict(values, holds, partly=False):
-    """A claim's verdict from the numbers it rests on: 'not measured' when any of them is missing,
-    so missing data never passes (nor fails); otherwise 'holds', 'partly' or 'fails'."""
-    if missing(*values):
-        return MISSING
-    return 'holds' if holds else ('partly' if partly else 'fails')
-
-
-def span(values, fmt):
-    """'a–b' over the values (one value: 'a'), formatted."""
-    lo, hi = fmt(min(values)), fmt(max(values))
-    return lo if lo == hi else f'{lo}–{hi}'
+    return fmt_num(x, digits, absent=DASH)
 
 
 def leak_rate(rows):
@@ -171,13 +140,12 @@ class Report:
         with open(os.path.join(results, 'edges.csv')) as f:
             self.edges = {(r['resolution'], r['stage']): float(r['time_us'])
                           for r in csv.DictReader(f)}
-        with open(os.path.join(results, 'meta.json')) as f:
-            self.meta = json.load(f)
+        self.meta = load_meta(results)
         variants = os.path.join(results, 'variants.csv')  # absent from older runs
         self.variants = load(variants) if any(
             os.path.exists(variants + ext) for ext in ('', '.gz')) else []
         self.resolutions = sorted({r['resolution'] for r in self.runs},
-                                  key=lambda s: int(s.split('x')[0]))
+                                  key=lambda s: frame_size(s)[0])
         self.rates = sorted({r['gap_rate'] for r in self.runs})
         table = load_methods(results)
         self.methods = [m['method'] for m in table]
@@ -480,7 +448,7 @@ class Report:
                  + ([f'{MISSING}: ' + ', '.join(unmeasured[:6])] if unmeasured else []))
         v.append(('G1', f'at gap rates {rates}, leak rate and area error no higher than '
                   'grid-filling\'s and every ray method\'s, on both objects',
-                  MISSING if unmeasured or not gaps else ('holds' if not worse else 'fails'),
+                  verdict([None] if unmeasured or not gaps else [], not worse),
                   ('; '.join(cases) if cases else 'no case where another is better')
                   + (f'; leak rate at {pct(gaps[-1], 0)} gaps: {leaks}' if gaps else '')))
         far, cells, values = [], [], []
@@ -624,8 +592,8 @@ class Report:
           'compact closed region holding the most motion (*compact-moving-region*). Acquired: the '
           'first frame the track starts (frame differencing needs two); correct: that first '
           'estimate is sane (centroid within '
-          f'{self.setting("acquisition", "sane_centroid", pct_g)} of √area, area '
-          f'within {self.setting("acquisition", "sane_area", pct_g)}); kept: the '
+          f'{self.setting("acquisition", "sane_centroid", fmt_pct_g)} of √area, area '
+          f'within {self.setting("acquisition", "sane_area", fmt_pct_g)}); kept: the '
           'share of later frames tracked sanely.')
         w()
         strategies = ['motion-centroid', 'compact-moving-region']
@@ -692,8 +660,8 @@ class Report:
         w = self.w
         w('# Benchmarks: the paper\'s comparison, measured')
         w()
-        w('*Generated by `./run bench` (`bench/report.py` over the output of `projtrack-bench`); do '
-          'not edit by hand. The raw data: '
+        w('*Generated by `./run bench` (`bench/paper/report.py` over the output of '
+          '`projtrack-bench`); do not edit by hand. The raw data: '
           f'[{runs_rel}/runs.csv.gz]({runs_rel}/runs.csv.gz) (one row per estimate), '
           f'[scenes.csv]({runs_rel}/scenes.csv), [sweep.csv.gz]({runs_rel}/sweep.csv.gz), '
           f'[variants.csv.gz]({runs_rel}/variants.csv.gz), [edges.csv]({runs_rel}/edges.csv), '
@@ -705,7 +673,7 @@ class Report:
             w()
         w('## Setup')
         w()
-        w(f'- Command: `{m["command"]}` then `bench/report.py`, run on {m["date"]}.')
+        w(f'- Command: `{m["command"]}` then `bench/paper/report.py`, run on {m["date"]}.')
         w(f'- Machine: {m["cpu"]}, {m["cores"]} cores (one thread used: OpenCV set to 1 thread), '
           f'{m["kernel"]}; OpenCV {m["opencv"]}; compiler {m["compiler"]}, release build.')
         spurious = [s for s in self.scenes if s['spurious'] == 1.0]
@@ -722,13 +690,13 @@ class Report:
           f'{", ".join(pct(g, 0) for g in self.rates)} of the object\'s contour pixels removed in '
           f'gaps of {self.gap_runs()} at random places, and, in {len(spurious)} of '
           f'{len(self.scenes)} scenes, spurious edges inside the object (specks on '
-          f'{self.setting("scene_model", "speck_share", pct_g)} of its interior plus '
+          f'{self.setting("scene_model", "speck_share", fmt_pct_g)} of its interior plus '
           f'{self.setting("scene_model", "strokes")} short strokes).')
         w(f'- Ground truth: the object\'s exact mask (pixel centres inside the analytic shape); '
           f'checked against a 4×4 supersampled count of the shape and, for the sphere, π r²: '
           f'{int(m["scenes"]) - int(m["inconsistent_scenes"])} of {m["scenes"]} scenes agree within '
-          f'{self.setting("scene_model", "truth_area_tolerance", pct_g)} (area; '
-          f'{self.setting("scene_model", "truth_analytic_tolerance", pct_g)} of π r²) and '
+          f'{self.setting("scene_model", "truth_area_tolerance", fmt_pct_g)} (area; '
+          f'{self.setting("scene_model", "truth_analytic_tolerance", fmt_pct_g)} of π r²) and '
           f'{self.setting("scene_model", "truth_centroid_tolerance", lambda v: f"{v:g} px")} '
           '(centroid).')
         w(f'- Every method runs from {m["seeds_per_scene"]} inner points per scene, drawn evenly '
@@ -828,7 +796,8 @@ class Report:
           'one bad run however far it spread); lower is better. Rule: the value with the lowest '
           'score; a cheaper value (fewer pixels visited: a count, not a noisy time) within '
           f'{pct(TIE, 0)} of that score wins. Recursion starts at 2 (with y = 1 the n^y method is '
-          'iterative ray-casting), with n capped (bench/main.cpp) so that n^3 stays affordable.')
+          'iterative ray-casting), with n capped (bench/paper/main.cpp) so that n^3 stays '
+          'affordable.')
         w()
         choice = self.choose_defaults()
         w('| parameter | affects | value: score, median pixels visited, median µs | chosen | '

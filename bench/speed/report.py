@@ -1,29 +1,26 @@
 #!/usr/bin/python3
 """Writes docs/performance.md from projtrack-speed's measurements (./run bench --speed).
 
-Usage: speed_report.py DATA_DIR OUTPUT.md
+Usage: bench/speed/report.py DATA_DIR OUTPUT.md
 Reads DATA_DIR/speed.csv, DATA_DIR/methods.csv (the table of methods) and DATA_DIR/meta.json;
 draws DATA_DIR/figures/cost_by_object_size.svg.
 Every number and verdict is computed here from the measurements or read from meta.json, never
 written by hand; a target whose numbers are missing reads "not measured", never "met".
 """
 import csv
-import json
 import math
 import os
 import statistics
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from report_kit import (DASH, MISSING, TARGET, fmt_pct, fmt_res, fmt_x,  # noqa: E402
+                        frame_size, load_meta, load_methods, missing, plt, verdict)
 
 COPY, HARNESS = "frame copy", "harness alone (identity)"
 PEER_CV, PEER_MOSSE = "cv::Canny + cv::floodFill", "cvtracker MOSSE"
 ELEMENT = "projtrack element default"
 BLUR, CV_BLUR, CANNY, CV_CANNY = "projtrack box blur", "cv::blur", "projtrack Canny", "cv::Canny"
-MISSING = "not measured"
 
 # The targets (issue 6's): requirements, not results.
 T1_COPIES = 10        # 1: the element costs at most this many frame copies (1080p)
@@ -45,15 +42,7 @@ def load(data_dir):
         for r in csv.DictReader(f):
             r["value"] = float(r["value"])
             rows.append(r)
-    with open(os.path.join(data_dir, "meta.json")) as f:
-        meta = json.load(f)
-    return rows, meta
-
-
-def load_methods(data_dir):
-    """The methods' names in the library's order, from the table projtrack-speed wrote."""
-    with open(os.path.join(data_dir, "methods.csv")) as f:
-        return [r["method"] for r in csv.DictReader(f)]
+    return rows, load_meta(data_dir)
 
 
 def value(rows, section, clip, res, what, key):
@@ -65,37 +54,15 @@ def value(rows, section, clip, res, what, key):
     return None
 
 
-def missing(*values):
-    return any(v is None or (isinstance(v, float) and math.isnan(v)) for v in values)
-
-
-def verdict(values, ok):
-    """'not measured' when any number the target rests on is missing: it never passes."""
-    if missing(*values):
-        return MISSING
-    return "**met**" if ok else "**not met**"
-
-
 def fmt_us(us):
+    """A time in µs, or in ms from 1 ms on; a dash when not measured."""
     if us is None:
-        return "–"
+        return DASH
     return f"{us / 1000:.2f} ms" if us >= 1000 else f"{us:.0f} µs"
 
 
-def fmt_x(x):
-    return "–" if x is None else f"{x:.1f}×"
-
-
-def fmt_share(x):
-    return MISSING if x is None else f"{100 * x:.0f} %"
-
-
-def fmt_res(res):
-    return res.replace("x", "×")
-
-
 def megapixels(res):
-    w, h = map(int, res.split("x"))
+    w, h = frame_size(res)
     return f"{w * h / 1e6:.1f} Mpx"
 
 
@@ -111,8 +78,8 @@ def per_frame_table(rows, methods, clip, res, default):
         cv_ratio = value(rows, "ratio", clip, res, f"{PEER_CV} / {what}", "median")
         mosse = value(rows, "ratio", clip, res, f"{PEER_MOSSE} / {what}", "median")
         name = f"**{what}**" if what == f"projtrack {default}" else what
-        out.append(f"| {name} | {fmt_us(us)} | {fmt_x(to_copy)} | {fmt_x(cv_ratio)} | "
-                   f"{fmt_x(mosse)} |")
+        out.append(f"| {name} | {fmt_us(us)} | {fmt_x(to_copy, DASH)} | "
+                   f"{fmt_x(cv_ratio, DASH)} | {fmt_x(mosse, DASH)} |")
     return "\n".join(out)
 
 
@@ -132,11 +99,11 @@ def size_rows(rows):
 def growth_by_method(sizes, methods):
     """Per method: the median over object sizes of (cost in the larger frame ÷ in the smaller),
     the resolutions, and the frames' pixel ratio."""
-    resolutions = sorted({res for res, _ in sizes}, key=lambda r: int(r.split("x")[0]))
+    resolutions = sorted({res for res, _ in sizes}, key=lambda r: frame_size(r)[0])
     if len(resolutions) < 2:
         return {}, resolutions, None
     small, large = resolutions[0], resolutions[-1]
-    pixels = [int(a) * int(b) for a, b in (r.split("x") for r in (small, large))]
+    pixels = [math.prod(frame_size(r)) for r in (small, large)]
     growth = {}
     for m in methods:
         a, b = dict(sizes.get((small, m), [])), dict(sizes.get((large, m), []))
@@ -179,8 +146,7 @@ def edge_cases(rows):
         out.append((r["value"], region.replace("region_", ""), res, us,
                     value(rows, "edge_ratio", r["clip"], res, f"{CV_BLUR} / {BLUR}", region),
                     value(rows, "edge_ratio", r["clip"], res, f"{CV_CANNY} / {CANNY}", region)))
-    pixels = lambda res: int(res.split("x")[0]) * int(res.split("x")[1])  # noqa: E731
-    return sorted(out, key=lambda c: (c[0] == 0, c[0], pixels(c[2])))
+    return sorted(out, key=lambda c: (c[0] == 0, c[0], math.prod(frame_size(c[2]))))
 
 
 def speed_phrase(ratios):
@@ -209,15 +175,15 @@ def targets(rows, meta, default, methods):
     share = value(rows, "clip", "generated", "1920x1080", "object", "share_of_frame")
     out = [
         (1, f"the element with its defaults (the appearance model, {default}), 1920×1080 I420, "
-            f"object {fmt_share(share)} of the frame: ≤ {T1_COPIES}× a frame copy", fmt_x(t1) if t1 is not None else MISSING,
-         verdict([t1], t1 is not None and t1 <= T1_COPIES)),
+            f"object {fmt_pct(share)} of the frame: ≤ {T1_COPIES}× a frame copy", fmt_x(t1),
+         verdict([t1], t1 is not None and t1 <= T1_COPIES, words=TARGET)),
         (2, f"the estimator's own job ({default} on the edges, `object-model=edges`): "
             f"≥ {T2_CANNY_FLOOD}× faster than Canny over the frame + `cv::floodFill`, 1080p",
-         fmt_x(t2) if t2 is not None else MISSING, verdict([t2], t2 is not None and t2 >= T2_CANNY_FLOOD)),
+         fmt_x(t2), verdict([t2], t2 is not None and t2 >= T2_CANNY_FLOOD, words=TARGET)),
         (3, f"the element with its defaults ≥ {T3_MOSSE}× faster than `cvtracker` MOSSE (given RGB), "
             f"640×480",
-         fmt_x(t3) if t3 is not None else MISSING,
-         verdict([t3], t3 is not None and t3 >= T3_MOSSE)),
+         fmt_x(t3),
+         verdict([t3], t3 is not None and t3 >= T3_MOSSE, words=TARGET)),
     ]
 
     growth, resolutions, pixel_ratio = growth_by_method(size_rows(rows), methods)
@@ -227,7 +193,7 @@ def targets(rows, meta, default, methods):
                 MISSING if worst is None else
                 f"the same object costs at most {worst:.2f}× as much in a frame with "
                 f"{pixel_ratio:.2f}× the pixels (median over sizes)",
-                verdict([worst], worst is not None and worst < T4_GROWTH)))
+                verdict([worst], worst is not None and worst < T4_GROWTH, words=TARGET)))
 
     allocs = {r["what"]: r["value"] for r in rows if r["section"] == "allocations"}
     lib = [v for k, v in allocs.items() if k.startswith("Tracker::track")]
@@ -252,7 +218,7 @@ def targets(rows, meta, default, methods):
                 f"frame, {MISSING if missing(el_off) else f'{el_off:g}'} with "
                 "`post-messages=false`",
                 verdict([lib_max, grew], lib_max == 0 and grew is not None and
-                        grew < T5_FLAT_KIB)))
+                        grew < T5_FLAT_KIB, words=TARGET)))
 
     s = streams(rows, T6_STREAMS)
     need = T6_STREAMS * T6_FPS
@@ -264,7 +230,7 @@ def targets(rows, meta, default, methods):
                 f"{s['fps']:.0f} frames tracked per second together, {s['fps'] / need:.1f}× the "
                 f"{need} needed ({streams_counts(s)})",
                 verdict([s["fps"], s["timeouts"], s["errors"]],
-                        s["fps"] is not None and s["fps"] >= need and clean)))
+                        s["fps"] is not None and s["fps"] >= need and clean, words=TARGET)))
     return out
 
 
@@ -334,7 +300,7 @@ def bounded_targets(rows, methods):
     out.append((7, f"adversarial content at {fmt_res(BOUNDED_RES)}, the element's defaults with "
                    f"each method: the worst frame ≤ {T7_RATIO}× the median frame of the same "
                    f"method on ordinary content, and ≤ {T7_MS} ms",
-                measured, verdict([None] if measured == MISSING else [], ok)))
+                measured, verdict([None] if measured == MISSING else [], ok, words=TARGET)))
 
     ext = extreme_rows(rows)
     worsts = [(w, s, where) for s, (w, where, _) in ext.items()]
@@ -347,7 +313,7 @@ def bounded_targets(rows, methods):
         ok = w <= 1000 * T8_MS
     out.append((8, f"any valid settings (a sample at their extremes, the default `max-work`), "
                    f"{fmt_res(BOUNDED_RES)}: the worst frame ≤ {T8_MS} ms",
-                measured, verdict([None] if measured == MISSING else [], ok)))
+                measured, verdict([None] if measured == MISSING else [], ok, words=TARGET)))
 
     iv = interrupt_values(rows)
     if missing(*iv.values()) or not iv["trials"]:
@@ -360,7 +326,7 @@ def bounded_targets(rows, methods):
               iv["frames_interrupted"] == iv["trials"])
     out.append((9, f"`set_state(NULL)` during a frame that would take minutes (no work limit) "
                    f"returns within {T9_MS} ms",
-                measured, verdict([None] if measured == MISSING else [], ok)))
+                measured, verdict([None] if measured == MISSING else [], ok, words=TARGET)))
     return out
 
 
@@ -395,7 +361,7 @@ def bounded_section(rows, methods, default):
         name = f"**{m}**" if m == default else m
         md.append(f"| {name} | {MISSING if missing(median) else fmt_us(median)} | "
                   f"{MISSING if missing(worst) else fmt_us(worst)} | {where or '–'} | "
-                  f"{fmt_x(ratio)} |")
+                  f"{fmt_x(ratio, DASH)} |")
     md.append("")
     if ext:
         md.append("### Settings at their extremes\n")
@@ -481,11 +447,11 @@ def streams_counts(s):
 def main():
     data_dir, out_md = sys.argv[1], sys.argv[2]
     rows, meta = load(data_dir)
-    methods = load_methods(data_dir)
+    methods = [m["method"] for m in load_methods(data_dir)]
     default = next((r["key"] for r in rows if r["section"] == "meta"
                     and r["what"] == "default method"), None)
     if default is None:
-        sys.exit("speed_report.py: speed.csv does not say the element's default method")
+        sys.exit("bench/speed/report.py: speed.csv does not say the element's default method")
     os.makedirs(os.path.join(data_dir, "figures"), exist_ok=True)
     sizes = size_rows(rows)
     growth, resolutions, pixel_ratio = growth_by_method(sizes, methods)
@@ -495,8 +461,8 @@ def main():
 
     md = []
     md.append("# Performance\n")
-    md.append("Generated by `./run bench --speed` (`build/bench/projtrack-speed`, then "
-              "`bench/speed_report.py`): do not edit by hand. Every number is a median over "
+    md.append("Generated by `./run bench --speed` (`build/bench/speed/projtrack-speed`, then "
+              "`bench/speed/report.py`): do not edit by hand. Every number is a median over "
               "rounds in which all contenders ran back to back on the same decoded frames, "
               "and every ratio is the median of the per-round ratios, so a noisy, shared machine "
               "slows all of them alike. No test asserts a time.\n")
@@ -535,7 +501,7 @@ def main():
             frames = value(rows, "clip", clip, res, "frames", "count")
             if clip == "generated":
                 share = value(rows, "clip", clip, res, "object", "share_of_frame")
-                title = (f"Generated: a shaded sphere covering {fmt_share(share)} of the frame, "
+                title = (f"Generated: a shaded sphere covering {fmt_pct(share)} of the frame, "
                          "swinging across it, sensor noise on every frame")
             else:
                 title = (f"Real clip: opencv-doc's Megamind.avi ({frames:.0f} frames, scaled), "
@@ -550,7 +516,7 @@ def main():
               "an estimate passes what would be refused (`leak-factor` × the last area, or "
               "`max_area` of the frame), so a leak costs about the object's size, but acquisition "
               f"still looks at the whole frame. cvtracker's start box there is a centred box of "
-              f"{fmt_share(start)} of the frame, and the OpenCV peer fills from the frame "
+              f"{fmt_pct(start)} of the frame, and the OpenCV peer fills from the frame "
               "centre.\n")
 
     statuses = [r for r in rows if r["section"] == "real_statuses"]
@@ -612,8 +578,9 @@ def main():
         for px, region, res, us, blur_ratio, canny_ratio in edges:
             obj = f"{px:.0f} px" if px > 0 else "whole frame"
             md.append(f"| {obj} | {fmt_res(region)} | {fmt_us(us[BLUR])} | "
-                      f"{fmt_us(us[CV_BLUR])} | {fmt_x(blur_ratio)} | {fmt_us(us[CANNY])} | "
-                      f"{fmt_us(us[CV_CANNY])} | {fmt_x(canny_ratio)} |")
+                      f"{fmt_us(us[CV_BLUR])} | {fmt_x(blur_ratio, DASH)} | "
+                      f"{fmt_us(us[CANNY])} | {fmt_us(us[CV_CANNY])} | "
+                      f"{fmt_x(canny_ratio, DASH)} |")
         md.append("")
 
     allocs = {r["what"]: r["value"] for r in rows if r["section"] == "allocations"}

@@ -2,14 +2,14 @@
 """Ground truth for the real clips of opencv-doc: the held object's silhouette on every frame,
 made by colour segmentation alone, never from projtrack's output.
 
-    real_truth.py CLIPS_DIR OUT_DIR [--sheets DIR]
+    bench/real/label_truth.py CLIPS_DIR OUT_DIR [--sheets DIR]
 
 CLIPS_DIR holds cup.mp4 and box.mp4 (gunzipped from /usr/share/doc/opencv-doc/opencv4/html/).
 Writes OUT_DIR/<clip>.csv (per frame: centroid, area, bounding box, the silhouette's point
 farthest from its border, mean luma for checking that a decoder gives the same frames) and
 OUT_DIR/<clip>_outlines.csv.gz (the silhouette's outer and hole contours, simplified to within
 one pixel). With --sheets, contact sheets of every frame with the silhouette drawn, for checking
-by eye. bench/truth/README.md says how the rules were checked and their known errors.
+by eye. bench/real/truth/README.md says how the rules were checked and their known errors.
 """
 import argparse
 import csv
@@ -92,7 +92,7 @@ SILHOUETTES = {'cup': cup_silhouette, 'box': box_silhouette}
 def frames_of(path):
     cap = cv2.VideoCapture(path)
     if not cap.isOpened():
-        raise SystemExit(f'real_truth: cannot read {path}')
+        raise SystemExit(f'label_truth: cannot read {path}')
     while True:
         ok, frame = cap.read()
         if not ok:
@@ -141,7 +141,7 @@ def label(clip, clips_dir, out_dir, sheets_dir):
         for i, (f, m) in enumerate(zip(frames, masks)):
             mo = cv2.moments(m, True)
             if mo['m00'] == 0:
-                raise SystemExit(f'real_truth: {clip} frame {i}: no silhouette found')
+                raise SystemExit(f'label_truth: {clip} frame {i}: no silhouette found')
             x, y, bw, bh = cv2.boundingRect(m)
             ix, iy = farthest_inside(m)
             luma = cv2.cvtColor(f, cv2.COLOR_BGR2GRAY).mean()

@@ -3,7 +3,7 @@
 true silhouette in each of its four quadrants about the centroid (the benchmark's main seed is
 the deepest point of all). Writes CLIP,X,Y rows to OUT for `projtrack-real --seeds`.
 
-usage: real_seeds.py TRUTH_DIR OUT CLIP...
+usage: bench/real/seeds.py TRUTH_DIR OUT CLIP...
 """
 import csv
 import gzip

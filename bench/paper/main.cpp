@@ -1,6 +1,6 @@
 // projtrack-bench: the paper's comparison, measured. Generates scenes with exact ground truth,
 // runs every estimator (and the stock-OpenCV peers) from many inner points, sweeps the
-// parameters, draws the paper's figures, and writes CSVs for bench/report.py.
+// parameters, draws the paper's figures, and writes CSVs for bench/paper/report.py.
 //
 //   projtrack-bench [--quick] [--out DIR] [--seeds N] [--reps N]
 //   projtrack-bench --list-methods   the table of methods as CSV (a run writes it to DIR too)

@@ -1,6 +1,6 @@
 // projtrack-real: every tracker on real footage, side by side on the same decoded frames
 // (./run bench --real; docs/real_footage.md). The clips are opencv-doc's: a hand turning a cup,
-// a hand turning a printed box (both with ground truth from bench/truth/), and people walking
+// a hand turning a printed box (both with ground truth from bench/real/truth/), and people walking
 // (vtest.avi, no held object: only whether a static region is ever reported as the object).
 //
 //   projtrack-real --out DIR --truth DIR --clip NAME=FILE... [--frames N]
@@ -153,7 +153,7 @@ bool decode(const std::string& path, Clip& c, int max_frames) {
   return !c.i420.empty();
 }
 
-// bench/truth/<clip>.csv, written by bench/real_truth.py.
+// bench/real/truth/<clip>.csv, written by bench/real/label_truth.py.
 std::vector<TruthFrame> read_truth(const std::string& path) {
   std::vector<TruthFrame> t;
   std::ifstream in(path);
@@ -305,7 +305,7 @@ std::unique_ptr<Clip> variant(const Clip& base, const std::string& how) {
   return c;
 }
 
-// A variant's truth, in the layout of bench/truth/<clip>.csv, for the report.
+// A variant's truth, in the layout of bench/real/truth/<clip>.csv, for the report.
 void write_truth(const Clip& c, const std::string& dir) {
   std::filesystem::create_directories(dir);
   std::FILE* f = std::fopen((dir + "/" + c.name + ".csv").c_str(), "w");
@@ -580,7 +580,7 @@ std::string default_method() {
 }
 
 bool only_default = false;  // --only-default: the element's default method and no seed alone
-// --seeds FILE: other points to seed the default method at, per clip (bench/real_seeds.py).
+// --seeds FILE: other points to seed the default method at, per clip (bench/real/seeds.py).
 std::map<std::string, std::vector<Point2i>> other_seeds;
 
 void run_all(const Clip& c, Progress& progress) {
@@ -782,7 +782,7 @@ void write_meta(const std::string& dir, const std::vector<std::unique_ptr<Clip>>
 int main(int argc, char** argv) {
   using namespace projtrack::bench;
   gst_init(&argc, &argv);
-  std::string out = "docs/real_footage", truth_dir = "bench/truth";
+  std::string out = "docs/real_footage", truth_dir = "bench/real/truth";
   std::vector<std::pair<std::string, std::string>> clip_args;
   int max_frames = 0;
   bool draw = true, variants = false;

@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """Writes docs/real_footage.md from projtrack-real's measurements (./run bench --real).
 
-Usage: real_report.py DATA_DIR TRUTH_DIR DOC_DIR OUTPUT.md [--readme README.md]
+Usage: bench/real/report.py DATA_DIR TRUTH_DIR DOC_DIR OUTPUT.md [--readme README.md]
 
 Reads DATA_DIR/runs.csv, speed.csv, meta.json and DATA_DIR/frames/ (the element's overlay),
-and TRUTH_DIR (bench/truth: the labels and outlines). Writes OUTPUT.md and, under DOC_DIR,
+and TRUTH_DIR (bench/real/truth: the labels and outlines). Writes OUTPUT.md and, under DOC_DIR,
 figures/, sheets/ and the data (runs.csv.gz, speed.csv, meta.json). With --readme, rewrites the
 README's block between the real-footage markers with the summary. Every number and verdict is
 computed here from the measurements; missing data reads "not measured".
@@ -19,11 +19,11 @@ import shutil
 import statistics
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from report_kit import (MISSING, TARGET, fmt_num, fmt_pct, fmt_pct_g, fmt_res,  # noqa: E402
+                        fmt_x, load_meta, missing, plt, span, verdict)
 
 # OpenCV decodes the clips for the contact sheets: FFmpeg's complaints about the clips' H.264
 # (harmless: the truth was labelled on the same decoded frames) would drown the progress.
@@ -42,9 +42,8 @@ NOTABLE_MISSES = 0.05  # a run missing on this share of a clip's frames or more 
 SPANS = 0.9          # a reported box covering this share of the true box spans the object
 STILL_SHARE = 0.005  # a reported box with fewer pixels changed over two frames is unchanged
 SCENE_SHARE = 0.2  # and with fewer pixels apart from the clip's median frame, the background
-README_BEGIN = "<!-- real-footage summary: written by bench/real_report.py -->"
+README_BEGIN = "<!-- real-footage summary: written by bench/real/report.py -->"
 README_END = "<!-- end of real-footage summary -->"
-MISSING = "not measured"
 
 # Issue 13's targets: requirements, not results. Their goal texts are rendered from these.
 GOAL_SEEDED_WITHIN = 0.97   # seeded: share of frames kept, worst clip, at least
@@ -63,7 +62,7 @@ def fraction(x):
 
 
 WITHIN_TEXT = f"{fraction(WITHIN)}√area"
-TOLERANCE_TEXT = f"±{100 * AREA_TOLERANCE:g} %"
+TOLERANCE_TEXT = f"±{fmt_pct_g(AREA_TOLERANCE)}"
 
 
 # ---- data ---------------------------------------------------------------------------------------
@@ -85,7 +84,7 @@ def load_runs(data_dir):
 
 
 def load_truth(truth_dir, clip, data_dir=None):
-    """A clip's truth: bench/truth's, or for a variant the harness's (DATA_DIR/truth)."""
+    """A clip's truth: bench/real/truth's, or for a variant the harness's (DATA_DIR/truth)."""
     path = os.path.join(truth_dir, clip + ".csv")
     if data_dir and not os.path.exists(path):
         path = os.path.join(data_dir, "truth", clip + ".csv")
@@ -109,7 +108,8 @@ def load_outlines(truth_dir, clip):
 
 
 def labelled_clips(truth_dir):
-    """The clips bench/truth labels: each must be measured for the seeded and no-seed targets."""
+    """The clips bench/real/truth labels: each must be measured for the seeded and no-seed
+    targets."""
     if not os.path.isdir(truth_dir):
         return []
     return sorted(f[:-4] for f in os.listdir(truth_dir)
@@ -132,14 +132,10 @@ def percentile(values, q):
     return v[min(len(v) - 1, max(0, math.ceil(q * len(v)) - 1))]
 
 
-def is_missing(v):
-    return v is None or (isinstance(v, float) and math.isnan(v))
-
-
 def worst(values, pick=min):
     """The worst of the clips' values; missing (NaN) when any clip's value is: min() over a list
     holding a NaN would quietly pass over it."""
-    if not values or any(is_missing(v) for v in values):
+    if not values or missing(*values):
         return math.nan
     return pick(values)
 
@@ -202,36 +198,16 @@ def metrics(rows, truth):
 
 # ---- formatting ---------------------------------------------------------------------------------
 
-def fmt_pct(x):
-    return MISSING if is_missing(x) else f"{100 * x:.0f} %"
-
-
 def fmt_px(x):
-    if is_missing(x):
+    if missing(x):
         return MISSING
     return "lost" if math.isinf(x) else f"{x:.1f}"
-
-
-def fmt_ms(x):
-    return MISSING if is_missing(x) else f"{x:.2f}"
-
-
-def fmt_us(x):
-    return MISSING if is_missing(x) else f"{x:.0f}"
-
-
-def fmt_x(x):
-    return MISSING if is_missing(x) else f"{x:.1f}×"
-
-
-def fmt_count(x):
-    return MISSING if is_missing(x) else f"{x:.0f}"
 
 
 def fmt_share(x):
     """A share of frames: one decimal under 10 %, so a share just under a threshold does not
     read as on it, and a few misses do not read 0 %."""
-    return MISSING if is_missing(x) else f"{100 * x:.1f} %" if 0 < x < 0.1 else fmt_pct(x)
+    return fmt_pct(x, finer_under=0.1)
 
 
 def fmt_ratio(x):
@@ -247,28 +223,8 @@ def frames_text(frames):
     return ("frame " if len(frames) == 1 else "frames ") + ranges(frames)
 
 
-def fmt_res(w, h):
-    return f"{w}×{h}"
-
-
-def span(values, fmt, unit=""):
-    """'a–b unit' over the values, formatted ('a unit' when they read the same); missing when
-    any is."""
-    if not values or any(is_missing(v) for v in values):
-        return MISSING
-    lo, hi = fmt(min(values)), fmt(max(values))
-    return (lo if lo == hi else f"{lo}–{hi}") + unit
-
-
 def span_pct(values):
     return span(values, lambda v: f"{100 * v:.0f}", " %")
-
-
-def verdict(value, ok):
-    """'met' / 'not met' from a measured value; missing data is never a pass."""
-    if is_missing(value):
-        return MISSING
-    return "**met**" if ok(value) else "**not met**"
 
 
 def ranges(frames, most=3):
@@ -564,21 +520,19 @@ def depth_inside(outlines, size, point):
 
 def variant_text(name, v):
     """How a variant was made, from the settings projtrack-real recorded in meta.json."""
-    def pct(x):
-        return f"{100 * x:g} %"
-
     def shift(x, what):
         return f"{what} {abs(x):g} {'higher' if x > 0 else 'lower'}"
 
     texts = {
         "mirror": lambda: "left and right swapped",
-        "dark": lambda: f"luma at {pct(v['luma'])} of its range, chroma at {pct(v['chroma'])}",
-        "dim": lambda: f"a dim room: the light at {pct(v['light'])} (luma, and chroma's "
+        "dark": lambda: f"luma at {fmt_pct_g(v['luma'])} of its range, chroma at "
+                        f"{fmt_pct_g(v['chroma'])}",
+        "dim": lambda: f"a dim room: the light at {fmt_pct_g(v['light'])} (luma, and chroma's "
                        "distance from neutral)",
         "bright": lambda: f"luma × {v['gain']:g} {'+' if v['offset'] >= 0 else '−'} "
                           f"{abs(v['offset']):g}, highlights burnt out",
         "gamma": lambda: f"shadows lifted, luma through a gamma of {v['gamma']:g}",
-        "warm": lambda: f"luma at {pct(v['luma'])}, {shift(v['cb'], 'Cb')}, "
+        "warm": lambda: f"luma at {fmt_pct_g(v['luma'])}, {shift(v['cb'], 'Cb')}, "
                         f"{shift(v['cr'], 'Cr')}",
         "noise": lambda: f"Gaussian, σ {v['luma_sigma']:g} on luma, {v['chroma_sigma']:g} on "
                          "chroma",
@@ -596,8 +550,7 @@ class Report:
     def __init__(self, data_dir, truth_dir, doc_dir):
         self.data_dir, self.truth_dir, self.doc_dir = data_dir, truth_dir, doc_dir
         self.runs = load_runs(data_dir)
-        with open(os.path.join(data_dir, "meta.json")) as f:
-            self.meta = json.load(f)
+        self.meta = load_meta(data_dir)
         self.speed = []
         speed_path = os.path.join(data_dir, "speed.csv")
         if os.path.exists(speed_path):
@@ -607,7 +560,8 @@ class Report:
         self.truth = {c: load_truth(truth_dir, c, data_dir) for c in self.clips}
         self.variants = [c for c in self.clips if self.meta["clips"][c].get("variant")]
         self.clips = [c for c in self.clips if c not in self.variants]
-        # The held clips: those with a truth, and every clip bench/truth labels, measured or not.
+        # The held clips: those with a truth, and every clip bench/real/truth labels, measured or
+        # not.
         self.held = [c for c in self.clips if self.truth[c]]
         self.held += [c for c in labelled_clips(truth_dir) if c not in self.held]
         self.trackers = {c: [t for (cc, t) in self.runs if cc == c]
@@ -629,7 +583,8 @@ class Report:
         sizes = {(self.clip_meta(c).get("width"), self.clip_meta(c).get("height")) for c in clips}
         sizes = {s for s in sizes if None not in s}
         if len(sizes) == 1:
-            return fmt_res(*sizes.pop())
+            w, h = sizes.pop()
+            return fmt_res(f"{w}x{h}")
         return "each clip's size" if sizes else "a size not recorded"
 
     def properties(self, clip, name):
@@ -658,17 +613,17 @@ class Report:
             self.w(f"| {name} | {fmt_pct(m['within'])} | {fmt_px(m['median'])} | "
                    f"{fmt_px(m['p90'])} | {fmt_pct(m['area_ok'])}{box} | {m['over2']} | "
                    f"{m['tracked']} / {m['lost']} / {m['searching']} | {m['reacquisitions']} | "
-                   f"{fmt_ms(m['ms'])} |")
+                   f"{fmt_num(m['ms'], 2)} |")
         self.w()
         cm = self.clip_meta(clip)
-        self.w(f"{len(self.truth[clip])} frames, "
-               f"{fmt_res(cm['width'], cm['height']) if 'width' in cm else 'size not recorded'}. "
+        size = fmt_res(f"{cm['width']}x{cm['height']}") if "width" in cm else "size not recorded"
+        self.w(f"{len(self.truth[clip])} frames, {size}. "
                "Lost and searching frames count as misses in every column: their error is infinite "
                "(\"lost\" where a percentile falls on one).")
         if any(self.group(clip, n) == "projtrack seeded elsewhere" for n in self.trackers[clip]):
             self.w(f"\"projtrack seeded at x,y\": the default method ({self.default}) seeded at "
                    "the middle of each quarter of frame 0's true silhouette (about its centroid; "
-                   "`bench/real_seeds.py`), where a user might click instead of its deepest point.")
+                   "`bench/real/seeds.py`), where a user might click instead of its deepest point.")
         self.w()
 
     def variants_table(self):
@@ -753,12 +708,12 @@ class Report:
         for clip in self.held:
             a = self.m.get((clip, f"projtrack {self.default}"), {}).get("ms")
             b = self.m.get((clip, "cvtracker MOSSE"), {}).get("ms")
-            r = b / a if not is_missing(a) and not is_missing(b) and a > 0 else math.nan
+            r = b / a if not missing(a, b) and a > 0 else math.nan
             ratios.append(r)
-            self.w(f"| {clip} | {fmt_ms(a)} | {fmt_ms(b)} | {fmt_x(r)} |")
+            self.w(f"| {clip} | {fmt_num(a, 2)} | {fmt_num(b, 2)} | {fmt_x(r)} |")
         self.w()
         big_res = sorted({r["resolution"] for r in self.speed})
-        self.w(f"The clips scaled to {', '.join(x.replace('x', '×') for x in big_res) or MISSING}"
+        self.w(f"The clips scaled to {', '.join(map(fmt_res, big_res)) or MISSING}"
                ", the element (default method, seeded) beside a copy of the I420 frame, frame by "
                "frame in turn:")
         self.w()
@@ -774,10 +729,9 @@ class Report:
                     except ValueError:
                         rows[r["what"]] = math.nan
             copy, ours = rows.get("frame copy", math.nan), rows.get("projtrack", math.nan)
-            x = ours / copy if not is_missing(copy) and not is_missing(ours) and copy > 0 \
-                else math.nan
+            x = ours / copy if not missing(copy, ours) and copy > 0 else math.nan
             big.append(x)
-            self.w(f"| {clip} | {fmt_us(copy)} | {fmt_us(ours)} | {fmt_x(x)} |")
+            self.w(f"| {clip} | {fmt_num(copy)} | {fmt_num(ours)} | {fmt_x(x)} |")
         self.w()
         self.speed_ratios = (worst(ratios, min), worst(big, max), big_res)
 
@@ -796,11 +750,11 @@ class Report:
         no_truth = [c for c in self.clips if not self.truth[c]]
         statics = [float(self.m[(c, "projtrack no seed")]["static"])
                    if (c, "projtrack no seed") in self.m else math.nan for c in no_truth]
-        static = sum(statics) if no_truth and not any(map(is_missing, statics)) else math.nan
+        static = sum(statics) if no_truth and not missing(*statics) else math.nan
         over = [float(m["over2"]) if m else math.nan for m in seeded]
         mosse_x, copy_x, big_res = getattr(self, "speed_ratios", (math.nan, math.nan, []))
         size = self.size_text(self.held)
-        big = ", ".join(x.replace("x", "×") for x in big_res) or "a size not recorded"
+        big = ", ".join(map(fmt_res, big_res)) or "a size not recorded"
         rows = [
             (f"seeded: frames within {WITHIN_TEXT} (worst clip)",
              f"≥ {fmt_pct(GOAL_SEEDED_WITHIN)}", of(seeded, "within"),
@@ -812,13 +766,13 @@ class Report:
              f"≥ {fmt_pct(GOAL_SEEDED_AREA)}", of(seeded, "area_ok"),
              lambda v: v >= GOAL_SEEDED_AREA, fmt_pct),
             (f"seeded: frames tracked with area > {OVER:g}× truth (every held clip)",
-             f"{GOAL_SEEDED_OVER:g}", sum(over) if not any(map(is_missing, over)) and over
-             else math.nan, lambda v: v <= GOAL_SEEDED_OVER, fmt_count),
+             f"{GOAL_SEEDED_OVER:g}", sum(over) if not missing(*over) and over
+             else math.nan, lambda v: v <= GOAL_SEEDED_OVER, fmt_num),
             (f"no seed: frames within {WITHIN_TEXT} (worst clip)",
              f"≥ {fmt_pct(GOAL_AUTO_WITHIN)}", of(auto, "within"),
              lambda v: v >= GOAL_AUTO_WITHIN, fmt_pct),
             ("no seed: frames reporting a static region, on the clip with no held object",
-             f"{GOAL_STATIC:g}", static, lambda v: v <= GOAL_STATIC, fmt_count),
+             f"{GOAL_STATIC:g}", static, lambda v: v <= GOAL_STATIC, fmt_num),
             (f"speed: MOSSE ÷ projtrack at {size} (worst clip)", f"≥ {GOAL_MOSSE:g}×", mosse_x,
              lambda v: v >= GOAL_MOSSE, fmt_x),
             (f"speed: projtrack ÷ frame copy at {big} (worst clip)", f"≤ {GOAL_COPIES:g}×",
@@ -828,15 +782,16 @@ class Report:
         self.w("|---|---|---|---|")
         self.verdicts = []
         for what, goal, value, ok, fmt in rows:
-            v = verdict(value, ok)
+            v = verdict([value], ok, words=TARGET)
             self.verdicts.append((what, goal, value, v, fmt))
-            shown = MISSING if is_missing(value) else fmt(value)
+            shown = MISSING if missing(value) else fmt(value)
             self.w(f"| {what} | {goal} | {shown} | {v} |")
         missing_clips = [c for c in self.held if c not in self.clips]
         if missing_clips:
             self.w()
-            self.w(f"Not in this run, though bench/truth labels them: {', '.join(missing_clips)}"
-                   ": every target over the held clips reads \"not measured\".")
+            self.w("Not in this run, though bench/real/truth labels them: "
+                   f"{', '.join(missing_clips)}: every target over the held clips reads "
+                   "\"not measured\".")
         self.w()
 
     # --- why it fails ---
@@ -989,7 +944,7 @@ class Report:
         rel = os.path.relpath(self.doc_dir, os.path.dirname(os.path.abspath(path)))
         self.w("# Real footage")
         self.w()
-        self.w("<!-- Generated by bench/real_report.py from `./run bench --real`: do not edit. -->")
+        self.w("<!-- Generated by bench/real/report.py from `./run bench --real`: do not edit. -->")
         self.w()
         clips = ", ".join(f"{c} ({v['frames']} frames, {v['width']}×{v['height']})"
                           for c, v in self.meta["clips"].items())
@@ -999,8 +954,8 @@ class Report:
         self.w()
         no_seed = next((self.properties(c, "projtrack no seed") for c in self.clips
                         if self.properties(c, "projtrack no seed") is not None), None)
-        self.w("The truth (bench/truth/, made by colour segmentation, never from projtrack; "
-               "see bench/truth/README.md) gives each frame's silhouette: the cup without the "
+        self.w("The truth (bench/real/truth/, made by colour segmentation, never from projtrack; "
+               "see bench/real/truth/README.md) gives each frame's silhouette: the cup without the "
                "fingers in front of it, the whole box with its printed pictures. projtrack runs "
                "with every method, seeded at the point of frame 0's true silhouette farthest "
                "from its border, and with no seed ("
@@ -1118,14 +1073,14 @@ class Report:
                    + (f" ({unmeasured} not measured)" if unmeasured else "") + ":")
         out.append("")
         for what, goal, value, v, fmt in self.verdicts:
-            shown = MISSING if is_missing(value) else fmt(value)
+            shown = MISSING if missing(value) else fmt(value)
             out.append(f"- {what}: {shown} (goal {goal}): {v.strip('*')}")
         out.append("")
         for clip in self.held:
             ours = self.m.get((clip, f"projtrack {self.default}"))
             peers = [(self.m[(clip, t)]["within"], t) for t in self.trackers.get(clip, [])
                      if self.group(clip, t) == "box tracker"
-                     and not is_missing(self.m[(clip, t)]["within"])]
+                     and not missing(self.m[(clip, t)]["within"])]
             if not ours or not peers:
                 out.append(f"On {clip}, projtrack (seeded) beside the box trackers: {MISSING}.")
                 continue
@@ -1140,7 +1095,7 @@ class Report:
 def rewrite_readme(path, block):
     text = open(path).read()
     if README_BEGIN not in text or README_END not in text:
-        sys.exit(f"real_report: {path} has no real-footage markers")
+        sys.exit(f"bench/real/report.py: {path} has no real-footage markers")
     head, rest = text.split(README_BEGIN, 1)
     _, tail = rest.split(README_END, 1)
     with open(path, "w") as f:
