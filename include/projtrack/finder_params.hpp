@@ -1,5 +1,5 @@
-// How the appearance model finds an object's first silhouette (ObjectFinder, object_finder.hpp):
-// part of TrackerParams.
+// How the appearance model finds an object's first silhouette (ObjectFinder,
+// src/acquisition/object_finder.hpp): part of TrackerParams.
 #pragma once
 
 namespace projtrack {

@@ -1,12 +1,14 @@
 // Follows one object from frame to frame: finds it, keeps its inner point, notices when it is
 // lost, finds it again, and turns its features into a 3D pointer (x, y, depth) with push clicks.
 //
-// One frame flows one way through the stages, each in its own file:
-//   frame → edges (edge_source) and appearance (appearance_model)
-//         → the object's silhouette (object_model, silhouette; object_finder when there is none)
-//         → the estimator on it (estimator) → plausibility → pointer → TrackResult
+// One frame flows one way through the stages, a folder of src/ each (docs/architecture.md):
+//   frame → edges (edges/) and appearance (appearance/)
+//         → the object's silhouette (appearance/silhouette_model; acquisition/ when there is none)
+//         → the estimator on it (estimators/) → the tracker's verdict (tracker/) → pointer/
+//         → TrackResult
 // With ObjectModelKind::Edges the silhouette stage is skipped: the estimator runs on the edges
-// themselves (edge_region), as in the paper, and motion_acquisition finds new objects.
+// themselves (tracker/edge_region), as in the paper, and acquisition/motion_acquisition finds
+// new objects.
 #pragma once
 
 #include <atomic>
@@ -84,8 +86,8 @@ class Tracker {
                     const Params& params, const TrackerParams& tp, Trace* trace = nullptr);
 
  private:
-  // The stages and what they keep between frames (tracker.cpp): an application needs none of
-  // their headers.
+  // The stages and what they keep between frames (src/tracker/tracker_impl.hpp): an application
+  // needs none of their headers.
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
