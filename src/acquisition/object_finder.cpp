@@ -4,6 +4,9 @@
 #include <cmath>
 #include <optional>
 
+#include "acquisition/separation.hpp"
+#include "core/plausibility.hpp"
+
 namespace projtrack {
 
 namespace {
@@ -239,12 +242,8 @@ void ObjectFinder::copy_region(int label, Mask& out) {
   ops_.fill_holes(out);
 }
 
-bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
-                             Mask& out, std::string& why) {
-  load(frame, p, work_);
-  foreground(p);
-  const int w = candidates_.rect().width, h = candidates_.rect().height, s = work_.scale();
-  const Point2i seed{seed_pixel.x / std::max(1, s), seed_pixel.y / std::max(1, s)};
+bool ObjectFinder::nearest_apart_region(Point2i seed, const FinderParams& p, Mask& out) {
+  const int w = candidates_.rect().width, h = candidates_.rect().height;
   // The seed's own pixel, or the nearest candidate pixel within a twentieth of the frame.
   const int reach = std::max(4, std::min(w, h) / 20);
   std::optional<Point2i> start;
@@ -260,10 +259,7 @@ bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const F
       }
     }
   }
-  if (!start || seed_pixel.x < 0 || seed_pixel.y < 0) {
-    why = "no colour near the inner point that the frame's border does not show too";
-    return false;
-  }
+  if (!start) return false;
   regions_.label(candidates_.view(), false);
   int label = regions_.row(start->y)[start->x];
   // A region smaller than any the finder takes for an object (a detail of a print under the
@@ -273,11 +269,39 @@ bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const F
     if (const int outer = enclosing_region(*start, label, p.min_area * w * h)) label = outer;
   }
   copy_region(label, out);
-  if (moments(out).area > p.max_area * w * h) {
-    why = "the region around the inner point covers most of the frame";
+  return true;
+}
+
+bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
+                             Mask& out, std::string& why) {
+  load(frame, p, work_);
+  foreground(p);
+  const int w = candidates_.rect().width, h = candidates_.rect().height, s = work_.scale();
+  const Point2i seed{seed_pixel.x / std::max(1, s), seed_pixel.y / std::max(1, s)};
+  if (seed_pixel.x < 0 || seed_pixel.y < 0 || seed.x >= w || seed.y >= h) {
+    why = "the inner point lies outside the frame";
     return false;
   }
-  return true;
+  // The user's object may fill most of the picture (kUserMaxArea), never all of it.
+  const double most = kUserMaxArea * w * h;
+  const bool apart = nearest_apart_region(seed, p, out) && moments(out).area <= most;
+  apart_from_border_ = apart;
+  // The border shows the seed's own colour: the region of that colour around the seed is a
+  // candidate too; the one whose colours stand apart from its surroundings' more is the object
+  // (a white disc on a black target, before a wall as white: the disc, not the target).
+  if (!candidates_.at(seed) &&
+      seed_region_.grow(work_.view(), {0, 0}, seed, 1, most, by_colour_, ops_) &&
+      (!apart || colour_separation(work_.view(), by_colour_, ops_, enclosure_) >
+                     colour_separation(work_.view(), out, ops_, enclosure_))) {
+    out.swap(by_colour_);
+    apart_from_border_ = false;
+    return true;
+  }
+  if (!apart)
+    why =
+        "no region around the inner point: neither its own colour nor one the frame's border "
+        "does not show";
+  return apart;
 }
 
 bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const FinderParams& p,

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "acquisition/seed_region.hpp"
 #include "appearance/appearance_model.hpp"
 #include "core/mask.hpp"
 #include "core/region_labels.hpp"
@@ -29,10 +30,15 @@ class ObjectFinder {
   // The colours of the frame's border strip on the last search from a seed or by motion:
   // counts per AppearanceModel colour bin, at scale().
   const std::vector<std::uint32_t>& border_colours() const { return border_counts_; }
+  // Whether the last silhouette found is of colours the frame's border does not show (so the
+  // object's colours can be learned against the border's); false when it was grown from the
+  // user's point by its own colour, which the border shows too.
+  bool apart_from_border() const { return apart_from_border_; }
   // The object around `seed`: the 4-connected region of colours not seen on the frame's border
-  // (a held object is in the middle of the picture; the wall, the table and the arm that holds
-  // it reach the border), the nearest one when the seed's own colour is seen there, its holes
-  // filled. False (and `why`) when there is none within reach of the seed.
+  // (the wall, the table and the arm that holds an object reach the border), its holes filled.
+  // When the border shows the seed's own colour too, the region grown from the seed by its own
+  // colour (SeedRegion); failing that, the nearest region of colours the border does not show.
+  // False (and `why`) when there is none within reach of the seed.
   bool from_seed(const ColorView& frame, Point2i seed, const FinderParams& p, Mask& out,
                  std::string& why);
   // The object in `box` (frame pixels): the region around the box's centre as from_seed finds it,
@@ -87,6 +93,9 @@ class ObjectFinder {
   template <class Score>
   int best_region(Score&& score) const;
   void copy_region(int label, Mask& out);
+  // The region of colours the border does not show at `seed` or nearest it (within a twentieth
+  // of the frame), its holes filled; false when there is none. Needs foreground().
+  bool nearest_apart_region(Point2i seed, const FinderParams& p, Mask& out);
   // The smallest labelled region of at least `least` pixels, other than `inner`, that encloses
   // work pixel `p` (it lies in the region's holes); 0 for none.
   int enclosing_region(Point2i p, int inner, double least);
@@ -101,8 +110,10 @@ class ObjectFinder {
   std::vector<std::uint32_t> border_counts_;
   std::vector<std::uint8_t> background_;  // per colour bin
   std::vector<std::uint8_t> like_;
-  Mask candidates_, opened_, enclosure_;
+  Mask candidates_, opened_, enclosure_, by_colour_;
   RegionLabels regions_;
+  SeedRegion seed_region_;
+  bool apart_from_border_ = true;
   MotionCounts moving_, moving_before_;
   std::vector<std::int32_t> samples_;      // motion samples per work pixel (count_motion)
   std::vector<std::int32_t> work_column_;  // a frame column's work column (count_motion)

@@ -198,8 +198,12 @@ bool SilhouetteModel::start(const ColorView& frame, EdgeSource& edges, const Mas
     }
   }
   // Against the border's colours, not a ring: a ring could hold the object's own part beyond a
-  // finger across it.
-  appearance_.learn(work_.view(), {work_.rect().x, work_.rect().y}, core_, background);
+  // finger across it. Without them (the border shows the object's colours too), against a ring
+  // around the first silhouette.
+  if (background.empty())
+    learn(core_, prior_, p.ring, 1.0);
+  else
+    appearance_.learn(work_.view(), {work_.rect().x, work_.rect().y}, core_, background);
   score();
   // Rounds of segmenting and learning, at least start_rounds, and on while the silhouette grows
   // (the part of the object beyond a finger comes in a reach at a time), at most three times as

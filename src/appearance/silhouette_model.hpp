@@ -33,9 +33,9 @@ class SilhouetteModel {
 
   // Starts from a first silhouette `first` (work coordinates at `first_scale`) found around
   // `seed` (a frame pixel): learns the colours of its core against the colours of the frame's
-  // border (`background`, counts per colour bin), then segments and learns again on this frame
-  // against a ring around it. Holds the result as the silhouette and puts it in `out`; false when
-  // nothing is left of the object.
+  // border (`background`, counts per colour bin; empty: against a ring around `first`), then
+  // segments and learns again on this frame against a ring around it. Holds the result as the
+  // silhouette and puts it in `out`; false when nothing is left of the object.
   bool start(const ColorView& frame, EdgeSource& edges, const Mask& first, int first_scale,
              Point2i seed, const std::vector<std::uint32_t>& background, const ObjectModelParams& p,
              Mask& out);

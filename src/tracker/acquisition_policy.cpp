@@ -12,10 +12,21 @@ namespace projtrack {
 
 namespace {
 
+const std::vector<std::uint32_t> kNoColours;
+
 // How much dimmer than TrackerParams::full_contrast the scene is: 1 at full contrast, at least ⅓.
 double contrast(int spread, const TrackerParams& tp) {
   if (spread <= 0 || !(tp.full_contrast > 0)) return 1.0;
   return std::clamp(spread / tp.full_contrast, 1.0 / 3, 1.0);
+}
+
+// The share of the frame that must change before acquisition looks: TrackerParams::min_motion,
+// or for an object lost before whose colours are known, a tenth of its own area if that is less
+// (a small ball rolling moves far less of the frame than a held cup).
+double least_motion(const TrackerState& s, const TrackerParams& tp, const ImageView& frame) {
+  const double pixels = static_cast<double>(frame.width) * frame.height;
+  if (!s.object.knows_colours() || !(s.track().lost_area > 0) || pixels <= 0) return tp.min_motion;
+  return std::min(tp.min_motion, 0.1 * s.track().lost_area / pixels);
 }
 
 // Auto acquisition: an object lost before, by its colours (forgotten after
@@ -23,11 +34,12 @@ double contrast(int spread, const TrackerParams& tp) {
 bool find_by_motion_or_colours(TrackerState& s, const ColorView& frame, const TrackerParams& tp,
                                const FinderParams& fp, Mask& first, Point2i& seed,
                                AppearanceStart& out) {
+  const double gate = least_motion(s, tp, frame.luma);
   // The last frame that showed motion, for the finder's check that what moves now moved then
   // too (a frame repeated by the camera or the encoder shows none, and does not count).
-  if (s.moved.fraction >= tp.min_motion) std::swap(s.moved_before, s.moved);
-  out.why = wait_for_motion(s.motion, frame.luma, motion_params(tp, s.motion.spread()),
-                            tp.min_motion, s.moved);
+  if (s.moved.fraction >= gate) std::swap(s.moved_before, s.moved);
+  out.why =
+      wait_for_motion(s.motion, frame.luma, motion_params(tp, s.motion.spread()), gate, s.moved);
   if (!out.why.empty()) return false;
   if (s.object.knows_colours() && s.track().searched >= tp.forget_after)
     s.forget_colours();  // not seen for long: look for any object
@@ -122,10 +134,12 @@ AppearanceStart start_appearance_track(TrackerState& s, const ColorView& frame, 
   Point2i seed;
   if (!find_first_silhouette(s, frame, tp, fp, first, seed, out)) return out;
   const int scale = s.finder.scale();
-  const bool ok = out.resumed
-                      ? s.object.resume(frame, edges, first, scale, seed, tp.object, silhouette)
-                      : s.object.start(frame, edges, first, scale, seed, s.finder.border_colours(),
-                                       tp.object, silhouette);
+  const bool ok =
+      out.resumed
+          ? s.object.resume(frame, edges, first, scale, seed, tp.object, silhouette)
+          : s.object.start(frame, edges, first, scale, seed,
+                           s.finder.apart_from_border() ? s.finder.border_colours() : kNoColours,
+                           tp.object, silhouette);
   if (!ok) {
     out.why = "nothing of the object's colours is left around it";
     return out;

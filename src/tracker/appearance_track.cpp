@@ -48,7 +48,7 @@ TrackResult Tracker::Impl::start_appearance(const ColorView& frame, EdgeSource& 
       stopped(f, in.tp, r);
       return r;
     }
-    start.why = why_implausible(f, w, h, in.tp);
+    start.why = why_implausible(f, w, h, in.tp, seeded ? Origin::User : Origin::Found);
     if (start.why.empty()) {
       accept(f, w, h, in, start.resumed, r);
       return r;
@@ -85,7 +85,9 @@ TrackResult Tracker::Impl::follow_appearance(const ColorView& frame, EdgeSource&
     stopped(f, in.tp, r);
     return r;
   }
-  if (std::string why = why_refused(f, w, h, in.tp, track.last ? &*track.last : nullptr, HUGE_VAL);
+  const Origin origin = track.seeded ? Origin::User : Origin::Found;
+  if (std::string why =
+          why_refused(f, w, h, in.tp, track.last ? &*track.last : nullptr, HUGE_VAL, origin);
       !why.empty()) {
     refuse(std::move(why), in.tp, r);
     return r;

@@ -13,7 +13,9 @@ TrackResult Tracker::Impl::track_edges(const ColorView& frame, EdgeSource& edges
   const int w = frame.luma.width, h = frame.luma.height;
   const TrackerState::Track& track = state.track();
   const Features* last = track.last ? &*track.last : nullptr;
-  const double limit = area_limit(w, h, in.tp, last);
+  // The user's object from the point they gave until the track is dropped.
+  const Origin origin = track.inner && (!last || track.seeded) ? Origin::User : Origin::Found;
+  const double limit = area_limit(w, h, in.tp, last, origin);
   Estimator& est = work.estimator(in.method);
   if (!track.inner) {
     const std::optional<Features> f =
@@ -51,7 +53,7 @@ TrackResult Tracker::Impl::track_edges(const ColorView& frame, EdgeSource& edges
     r.features = f;
     return r;
   }
-  if (std::string why = why_refused(f, w, h, in.tp, last, limit); why.empty())
+  if (std::string why = why_refused(f, w, h, in.tp, last, limit, origin); why.empty())
     accept(f, w, h, in, false, r);
   else
     refuse(std::move(why), in.tp, r);

@@ -1,11 +1,17 @@
 #include "tracker/silhouette_estimate.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace projtrack {
 
 namespace {
+
+// The grid's and the blocks' cells are at most a kLeastCellsAcross-th of the object's √area: a
+// small object is measured by as many grid lines as a large one (its outline is closed, so a
+// finer grid costs work, never a leak).
+constexpr double kLeastCellsAcross = 8;
 
 int to_work(int v, int scale) { return v < 0 ? -1 : v / scale; }
 
@@ -124,9 +130,23 @@ PieceSum estimate_pieces(const SilhouetteView& s, const std::optional<Point2i>& 
 
 }  // namespace
 
+namespace {
+
+Params cells_for(const SilhouetteView& s, const Params& given) {
+  Params p = given;
+  const double area = moments(s.mask).area * s.scale * s.scale;
+  const int most = std::max(1, static_cast<int>(std::sqrt(area) / kLeastCellsAcross));
+  p.grid_size = std::min(p.grid_size, most);
+  p.block_size = std::min(p.block_size, most);
+  return p;
+}
+
+}  // namespace
+
 Features estimate_on_silhouette(const SilhouetteView& s, const std::optional<Point2i>& inner,
-                                Estimator& est, Method m, const Params& params, WorkBudget& budget,
+                                Estimator& est, Method m, const Params& given, WorkBudget& budget,
                                 SilhouetteEstimateBuffers& buffers, Trace* trace) {
+  const Params params = cells_for(s, given);
   PieceSum sum = estimate_pieces(s, inner, est, params, budget, buffers, trace, false);
   if (sum.stopped) return sum.total;
   // A fill that covers much less than the silhouette was kept out of part of it: once more, in
