@@ -209,7 +209,8 @@ def compare(args, tracker, frames, box):
     for who, count, spent in summary:
         say(f'{who}: the object on {count} of {len(times["projtrack"])} frames, median '
             f'{1000 * statistics.median(spent):.1f} ms a frame')
-    if args.picture and not cv2.imwrite(args.picture, draw(*shown, f'OpenCV {name}')):
+    if args.picture and not cv2.imwrite(args.picture, draw(*shown, f'OpenCV {name}'),
+                                        [cv2.IMWRITE_PNG_COMPRESSION, 9]):
         raise Failure(f'cannot write {args.picture}')
     return 0 if measured else 1
 
