@@ -95,7 +95,7 @@ Result PyTracker::track(const py::handle& frame, const Where& where, const py::o
   }
   const ColorView view = reader_.read(frame);
   const int w = view.luma.width, h = view.luma.height;
-  double seconds = static_cast<double>(where.restart ? 0 : frames_) / settings_.fps;
+  double seconds = static_cast<double>(where.restart ? 0 : frames_.load()) / settings_.fps;
   if (!t.is_none()) {
     seconds = number(t, "t");
     if (!std::isfinite(seconds)) throw py::value_error("t: a finite number of seconds expected");

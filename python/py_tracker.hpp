@@ -5,6 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <atomic>
 #include <mutex>
 
 #include "frames.hpp"
@@ -45,7 +46,8 @@ class PyTracker {
   Tracker tracker_;
   FrameReader reader_;
   std::mutex mutex_;  // one frame at a time: track() runs without the GIL
-  long frames_ = 0;   // frames tracked since the start or reset()
+  // Frames tracked since the start or reset(); frames() may read it while a thread tracks.
+  std::atomic<long> frames_{0};
 };
 
 // The Tracker class in module `m`.
