@@ -11,20 +11,19 @@ forces it), one line per event (acquired, lost and why, push), and, for files an
 input, writes every frame to a CSV (--csv) and plots the trajectory (x, y and depth over time,
 pushes marked) to --out. Without a camera it says so and exits; without a display the camera's
 picture is not shown. Needs the plugin on GST_PLUGIN_PATH and Debian's python3-gst-1.0,
-python3-numpy and python3-matplotlib.
+python3-numpy and python3-matplotlib. Exit code 0 when an object was tracked, 1 when none was
+or the pipeline failed, 2 without a camera, file or package it needs.
 """
-import argparse
 import csv
 import math
 import os
 import sys
 
-import gi
-
-gi.require_version('Gst', '1.0')
-from gi.repository import GLib, Gst  # noqa: E402
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cli import (USAGE, Failure, gi_modules, gstreamer, module, parse_launch,  # noqa: E402
+                 parser, positive_int, run, say, stdout_closed)
+
+GLib, Gst = gi_modules(os.path.basename(sys.argv[0]), 'GLib', 'Gst')
 
 
 def generated_source(pipeline_text_tail, frames):
@@ -37,8 +36,8 @@ def generated_source(pipeline_text_tail, frames):
         return 0.35 + 0.1 * t / 4, 0.55, 1.0 + push
 
     scene = HandScene(640, 480, path)
-    pipeline = Gst.parse_launch(
-        'appsrc name=src format=time caps=video/x-raw,format=RGBx,width=640,height=480,'
+    pipeline = parse_launch(
+        Gst, 'appsrc name=src format=time caps=video/x-raw,format=RGBx,width=640,height=480,'
         'framerate=30/1 ! videoconvert ! ' + pipeline_text_tail)
     src = pipeline.get_by_name('src')
 
@@ -52,7 +51,7 @@ def generated_source(pipeline_text_tail, frames):
 
 
 def plot(samples, pushes, path):
-    import matplotlib
+    matplotlib = module('cursor3d', 'matplotlib', 'python3-matplotlib')
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
     t = [s[0] for s in samples]
@@ -122,7 +121,7 @@ def add_source_arguments(ap):
     src.add_argument('--camera', default='/dev/video0', help='V4L2 device (default)')
     src.add_argument('--file', help='a video file')
     src.add_argument('--generated', action='store_true', help='a generated hand')
-    ap.add_argument('--frames', type=int, default=120, help='with --generated')
+    ap.add_argument('--frames', type=positive_int, default=120, help='with --generated')
 
 
 def source_pipeline(args, tracker, camera_tail):
@@ -132,30 +131,44 @@ def source_pipeline(args, tracker, camera_tail):
     if args.generated:
         return generated_source(f'{tracker} ! fakesink', args.frames)
     if args.file:
-        return Gst.parse_launch(f'filesrc location="{args.file}" ! decodebin ! videoconvert ! '
-                                f'{tracker} ! fakesink'), None
-    return Gst.parse_launch(f'v4l2src device={args.camera} ! videoconvert ! {tracker} '
-                            f'{camera_tail}'), None
+        if not os.path.isfile(args.file):
+            raise Failure(f'no file {args.file}', USAGE)
+        return parse_launch(Gst, f'filesrc location="{args.file}" ! decodebin ! videoconvert ! '
+                                 f'{tracker} ! fakesink'), None
+    return parse_launch(Gst, f'v4l2src device={args.camera} ! videoconvert ! {tracker} '
+                             f'{camera_tail}'), None
 
 
 def run_pipeline(pipeline, feed, on_projtrack):
-    """Plays `pipeline` until its end, an error or Ctrl-C, calling on_projtrack(structure) for
-    every projtrack message."""
+    """Plays `pipeline` until its end, Ctrl-C or stdout's reader going, calling
+    on_projtrack(structure) for every projtrack message; a Failure on a pipeline error."""
     loop = GLib.MainLoop()
+    errors = []  # a pipeline error, or what on_projtrack raised: raised once the loop is left
 
     def on_message(bus, msg):
         if msg.type == Gst.MessageType.ERROR:
-            print('error:', msg.parse_error()[0].message, file=sys.stderr)
+            errors.append(Failure(f'pipeline error: {msg.src.get_name()}: '
+                                  f'{msg.parse_error()[0].message}'))
             loop.quit()
         elif msg.type == Gst.MessageType.EOS:
             loop.quit()
         elif msg.type == Gst.MessageType.ELEMENT and msg.get_structure().get_name() == 'projtrack':
-            on_projtrack(msg.get_structure())
+            try:
+                on_projtrack(msg.get_structure())
+            except Exception as e:  # noqa: BLE001 -- a callback's exception would only be printed
+                errors.append(e)
+                loop.quit()
+        return True
+
+    def reader_gone():
+        if stdout_closed.is_set():
+            loop.quit()
         return True
 
     bus = pipeline.get_bus()
     bus.add_signal_watch()
     bus.connect('message', on_message)
+    GLib.timeout_add(100, reader_gone)
     pipeline.set_state(Gst.State.PLAYING)
     if feed:
         GLib.idle_add(lambda: feed() and False)
@@ -163,11 +176,15 @@ def run_pipeline(pipeline, feed, on_projtrack):
         loop.run()
     except KeyboardInterrupt:
         pass
-    pipeline.set_state(Gst.State.NULL)
+    finally:
+        pipeline.set_state(Gst.State.NULL)
+        bus.remove_signal_watch()
+    if errors:
+        raise errors[0]
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = parser(__doc__)
     add_source_arguments(ap)
     ap.add_argument('--out', default='out/trajectory.png', help='the plot, for files')
     ap.add_argument('--csv', default='out/trajectory.csv', help='every frame, for files')
@@ -176,10 +193,8 @@ def main():
     args = ap.parse_args()
     camera = not (args.file or args.generated)
     if camera and (why := camera_problem(args.camera)):
-        print(f'cursor3d: {why}: plug one in, or use --file clip.mp4 or --generated',
-              file=sys.stderr)
-        return 2
-    Gst.init(None)
+        raise Failure(f'{why}: plug one in, or use --file clip.mp4 or --generated', USAGE)
+    gstreamer()
     live = args.live or sys.stdout.isatty()
 
     # A camera's picture with the overlay in a window, when there is a display to open one on.
@@ -194,9 +209,9 @@ def main():
         writer = csv.DictWriter(csv_file, CSV_FIELDS)
         writer.writeheader()
 
-    def say(text):
+    def event(text):
         """An event on its own line (after the live line, if one is shown)."""
-        print(('\r\033[K' if live else '') + text, flush=True)
+        say(('\r\033[K' if live else '') + text)
 
     def on_projtrack(s):
         t = s.get_value('timestamp') / Gst.SECOND
@@ -208,29 +223,31 @@ def main():
             samples.append((t, s.get_value('position-x'), s.get_value('position-y'),
                             s.get_value('depth')))
         if s.has_field('acquired'):
-            say(f'{t:7.2f}s  acquired an object')
+            event(f'{t:7.2f}s  acquired an object')
         if status == 'lost' and not state.get('lost'):
-            say(f'{t:7.2f}s  lost: {s.get_string("detail")}')
+            event(f'{t:7.2f}s  lost: {s.get_string("detail")}')
         state['lost'] = status == 'lost'
         if s.has_field('gesture') and status in TRACKING:
             pushes.append(t)
-            say(f'{t:7.2f}s  {s.get_string("gesture")}  at x {s.get_value("position-x"):+.2f} '
+            event(f'{t:7.2f}s  {s.get_string("gesture")}  at x {s.get_value("position-x"):+.2f} '
                 f'y {s.get_value("position-y"):+.2f} depth {s.get_value("depth"):.2f}')
         if live:
-            print(f'\r\033[K{t:7.2f}s  {live_line(s)}', end='', flush=True)
+            say(f'\r\033[K{t:7.2f}s  {live_line(s)}', end='')
 
-    run_pipeline(pipeline, feed, on_projtrack)
+    try:
+        run_pipeline(pipeline, feed, on_projtrack)
+    finally:
+        if writer:
+            csv_file.close()
     if live:
-        print()
-    if writer:
-        csv_file.close()
+        say()
     if not camera and samples:
         os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
         plot(samples, pushes, args.out)
-        print(f'{len(samples)} frames tracked, {len(pushes)} push(es); wrote {args.csv} and '
-              f'{args.out}')
+        say(f'{len(samples)} frames tracked, {len(pushes)} push(es); wrote {args.csv} and '
+            f'{args.out}')
     return 0 if samples else 1
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    run('cursor3d', main)

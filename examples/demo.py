@@ -7,20 +7,22 @@ Writes under --out (default out/):
   demo.csv   one row per frame: projtrack's features next to the true centroid and area
              (<clip>.csv; the truth of the real clips is bench/real/truth/'s)
 and prints a summary. Needs the plugin on GST_PLUGIN_PATH (./run demo sets it) and Debian's
-python3-gst-1.0 and python3-numpy; the real clips need opencv-doc and gstreamer1.0-libav.
+python3-gst-1.0 and python3-numpy; the real clips need opencv-doc and gstreamer1.0-libav. Exit
+code 0 when every frame was tracked (a real clip: any), 1 when not or the pipeline failed, 2 for
+a bad option or a missing package.
 """
-import argparse
 import csv
 import gzip
 import math
 import os
 import sys
 
-import gi
-import numpy as np
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cli import (FAILED, USAGE, Failure, gi_modules, gstreamer, module,  # noqa: E402
+                 parse_launch, parser, positive_int, run)
 
-gi.require_version('Gst', '1.0')
-from gi.repository import Gst  # noqa: E402
+np = module('demo', 'numpy', 'python3-numpy')
+(Gst,) = gi_modules('demo', 'Gst')
 
 FIELDS = ['frame', 'timestamp_s', 'status', 'centroid_x', 'centroid_y', 'area', 'x', 'y', 'width',
           'height', 'inner_point_x', 'inner_point_y', 'iterations', 'processing_ms',
@@ -143,50 +145,52 @@ def real_clip(args):
     """A real held object: opencv-doc's clip, seeded where the truth's first silhouette is
     deepest, scored against that truth."""
     path = os.path.join(args.out, args.clip + '.mp4')
-    with gzip.open(os.path.join(OPENCV_DOC, args.clip + '.mp4.gz')) as src, open(path, 'wb') as dst:
+    packed = os.path.join(OPENCV_DOC, args.clip + '.mp4.gz')
+    if not os.path.exists(packed):
+        raise Failure(f'no {packed}: install opencv-doc (and gstreamer1.0-libav to decode it)',
+                      USAGE)
+    with gzip.open(packed) as src, open(path, 'wb') as dst:
         dst.write(src.read())
     with open(os.path.join(TRUTH, args.clip + '.csv'), newline='') as f:
         truth_rows = list(csv.DictReader(f))
     truths = [(float(r['centroid_x']), float(r['centroid_y']), float(r['area'])) for r in truth_rows]
     seed = (int(truth_rows[0]['inner_x']), int(truth_rows[0]['inner_y']))
     video = os.path.join(args.out, args.clip + '.webm')
-    pipeline = Gst.parse_launch(
-        f'filesrc location={path} ! decodebin ! videoconvert ! '
+    pipeline = parse_launch(
+        Gst, f'filesrc location={path} ! decodebin ! videoconvert ! '
         f'projtrack name=tracker draw=true method={args.method} {args.extra} '
         f'inner-point-x={seed[0]} inner-point-y={seed[1]} ! '
         f'videoconvert ! vp8enc deadline=1 cpu-used=8 ! webmmux ! filesink location={video}')
     pipeline.set_state(Gst.State.PLAYING)
     rows, error = collect(pipeline, truths)
     if error or not rows:
-        print(f'demo: pipeline error: {error or "no projtrack message arrived"}', file=sys.stderr)
-        return 1
+        raise Failure(f'pipeline error: {error or "no projtrack message arrived"}')
     tracked = report(rows, f'projtrack demo: {args.method}, opencv-doc {args.clip}.mp4, '
                      f'{len(rows)} frames, seeded at {seed[0]},{seed[1]}',
                      video, os.path.join(args.out, args.clip + '.csv'))
-    return 0 if tracked else 2
+    return 0 if tracked else FAILED
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = parser(__doc__)
     ap.add_argument('--clip', choices=['cup', 'box'],
                     help="a real clip of opencv-doc's instead of the generated video")
-    ap.add_argument('--out', default='out')
-    ap.add_argument('--frames', type=int, default=300)
-    ap.add_argument('--width', type=int, default=640)
-    ap.add_argument('--height', type=int, default=480)
-    ap.add_argument('--method', default='gap-tolerant-filling')
+    ap.add_argument('--out', default='out', help='where to write (default out)')
+    ap.add_argument('--frames', type=positive_int, default=300, help='frames to generate')
+    ap.add_argument('--width', type=positive_int, default=640, help='frame width')
+    ap.add_argument('--height', type=positive_int, default=480, help='frame height')
+    ap.add_argument('--method', default='gap-tolerant-filling', help='projtrack\'s method')
     ap.add_argument('--extra', default='', help='more projtrack properties, e.g. "grid-size=12"')
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
-
-    Gst.init(None)
+    gstreamer()
     if args.clip:
         return real_clip(args)
     scene = HandScene(args.width, args.height)
     cx, cy, _ = scene.pose(0)
     video = os.path.join(args.out, 'demo.webm')
-    pipeline = Gst.parse_launch(
-        f'appsrc name=src is-live=false format=time '
+    pipeline = parse_launch(
+        Gst, f'appsrc name=src is-live=false format=time '
         f'caps=video/x-raw,format=RGBx,width={args.width},height={args.height},framerate=30/1 ! '
         f'videoconvert ! projtrack name=tracker draw=true method={args.method} {args.extra} '
         f'inner-point-x={int(cx)} inner-point-y={int(cy)} ! '
@@ -207,12 +211,11 @@ def main():
 
     rows, error = collect(pipeline, truths)
     if error or not rows:
-        print(f'demo: pipeline error: {error or "no projtrack message arrived"}', file=sys.stderr)
-        return 1
+        raise Failure(f'pipeline error: {error or "no projtrack message arrived"}')
     tracked = report(rows, f'projtrack demo: {args.method}, {args.width}x{args.height}, '
                      f'{len(rows)} frames', video, os.path.join(args.out, 'demo.csv'))
-    return 0 if tracked == len(rows) else 2
+    return 0 if tracked == len(rows) else FAILED
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    run('demo', main)

@@ -8,21 +8,21 @@ Debian's python3-evdev; the new device is an absolute pointer (a tablet, to the 
     pointer_uinput.py --dry-run --file clip.mp4
 
 Writing to /dev/uinput needs root or the uinput group. --dry-run opens no device: it prints each
-event it would send (its evdev name and value), and is what the tests run.
+event it would send (its evdev name and value), and is what the tests run. Exit code 0 when the
+pointer moved, 1 when it never did or the pipeline failed, 2 without a camera, uinput device or
+package it needs.
 """
 import argparse
 import os
 import sys
 
-import gi
-
-gi.require_version('Gst', '1.0')
-from gi.repository import Gst  # noqa: E402
-from evdev import AbsInfo, UInput, ecodes  # noqa: E402
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cli import USAGE, Failure, gstreamer, module, parser, run, say  # noqa: E402
 from cursor3d import (TRACKING, add_source_arguments, camera_problem,  # noqa: E402
                       run_pipeline, source_pipeline)
+
+evdev = module('pointer_uinput', 'evdev', 'python3-evdev')
+AbsInfo, UInput, ecodes = evdev.AbsInfo, evdev.UInput, evdev.ecodes
 
 AXIS_MAX = 65535  # the device's absolute range on both axes; the desktop maps it to the screen
 
@@ -32,10 +32,10 @@ class DryRun:
 
     def write(self, kind, code, value):
         name = ecodes.bytype[kind][code]
-        print(f'{ecodes.EV[kind]} {name if isinstance(name, str) else name[0]} {value}')
+        say(f'{ecodes.EV[kind]} {name if isinstance(name, str) else name[0]} {value}')
 
     def syn(self):
-        print('SYN_REPORT')
+        say('SYN_REPORT')
 
     def close(self):
         pass
@@ -55,7 +55,7 @@ def to_axis(position):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = parser(__doc__)
     add_source_arguments(ap)
     ap.add_argument('--dry-run', action='store_true', help='print the events, open no device')
     ap.add_argument('--mirror', action=argparse.BooleanOptionalAction, default=None,
@@ -64,17 +64,16 @@ def main():
     args = ap.parse_args()
     camera = not (args.file or args.generated)
     if camera and (why := camera_problem(args.camera)):
-        print(f'pointer_uinput: {why}: use --file or --generated', file=sys.stderr)
-        return 2
+        raise Failure(f'{why}: use --file or --generated', USAGE)
     mirror = camera if args.mirror is None else args.mirror
-    Gst.init(None)
+    gstreamer()
     pipeline, feed = source_pipeline(args, 'projtrack name=tracker', '! fakesink')
     try:
         device = open_device(args.dry_run)
-    except (OSError, PermissionError) as e:
-        print(f'pointer_uinput: cannot create a uinput device ({e}): run as root, or join the '
-              'uinput group; --dry-run prints the events instead', file=sys.stderr)
-        return 2
+    except (OSError, evdev.UInputError) as e:
+        raise Failure(f'cannot create a uinput device ({e}): load the uinput module '
+                      '(modprobe uinput), run as root or join the uinput group; --dry-run '
+                      'prints the events instead', USAGE) from None
     moved = [0]
 
     def on_projtrack(s):
@@ -91,11 +90,13 @@ def main():
             device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, 0)
             device.syn()
 
-    run_pipeline(pipeline, feed, on_projtrack)
-    device.close()
+    try:
+        run_pipeline(pipeline, feed, on_projtrack)
+    finally:
+        device.close()
     print(f'pointer_uinput: moved the pointer on {moved[0]} frames', file=sys.stderr)
     return 0 if moved[0] else 1
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    run('pointer_uinput', main)

@@ -8,14 +8,10 @@ Run with Debian's Python (it has python3-gst-1.0) and the plugin on GST_PLUGIN_P
         'filesrc location=clip.mp4 ! decodebin ! videoconvert ! projtrack inner-point-x=320 inner-point-y=240 ! fakesink'
 
 The pipeline must contain a projtrack element; its 'projtrack' element messages are read from the
-bus (docs/element.md lists every field).
+bus (docs/element.md lists every field). Exit code 0 at the end of the stream, 1 on a pipeline
+error, 2 for a pipeline that cannot be built.
 """
-import sys
-
-import gi
-
-gi.require_version('Gst', '1.0')
-from gi.repository import Gst  # noqa: E402
+from cli import FAILED, gstreamer, parse_launch, parser, play, run, say, wait_for_end
 
 DEFAULT_PIPELINE = ('videotestsrc pattern=ball num-buffers=60 ! video/x-raw,width=320,height=240 ! '
                     'projtrack inner-point-x=160 inner-point-y=120 ! fakesink')
@@ -28,6 +24,7 @@ MEASURED = ('ok', 'reached-border', 'covers-frame')
 
 def describe(s):
     """One line for one 'projtrack' message structure."""
+    from gi.repository import Gst
     ts = s.get_value('timestamp')
     when = f'{ts / Gst.SECOND:8.3f}s' if ts != Gst.CLOCK_TIME_NONE else '       -'
     status = s.get_string('status')
@@ -40,32 +37,25 @@ def describe(s):
 
 
 def main():
-    Gst.init(None)
-    pipeline = Gst.parse_launch(sys.argv[1] if len(sys.argv) > 1 else DEFAULT_PIPELINE)
-    bus = pipeline.get_bus()
-    pipeline.set_state(Gst.State.PLAYING)
-    try:
-        return print_messages(bus)
-    finally:
-        pipeline.set_state(Gst.State.NULL)
+    ap = parser(__doc__)
+    ap.add_argument('pipeline', nargs='?', default=DEFAULT_PIPELINE,
+                    help='a gst-launch-1.0 pipeline with a projtrack element '
+                         '(default: videotestsrc\'s ball)')
+    args = ap.parse_args()
+    Gst = gstreamer()
+    pipeline = parse_launch(Gst, args.pipeline)
+    seen = []
 
-
-def print_messages(bus):
-    """Prints every projtrack message until end of stream; 1 on a pipeline error."""
-    while True:
-        msg = bus.timed_pop_filtered(
-            Gst.CLOCK_TIME_NONE,
-            Gst.MessageType.ELEMENT | Gst.MessageType.EOS | Gst.MessageType.ERROR)
-        if msg.type == Gst.MessageType.ERROR:
-            err, _ = msg.parse_error()
-            print(f'error: {err.message}', file=sys.stderr)
-            return 1
-        if msg.type == Gst.MessageType.EOS:
-            return 0
+    def on_message(msg):
         s = msg.get_structure()
         if s is not None and s.get_name() == 'projtrack':
-            print(describe(s), flush=True)
+            seen.append(True)
+            say(describe(s))
+
+    play(pipeline)
+    wait_for_end(pipeline, on_message, Gst.MessageType.ELEMENT)
+    return 0 if seen else FAILED
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    run('print_features', main)

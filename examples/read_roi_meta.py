@@ -12,14 +12,10 @@ fields: the ROI meta is reached through GstVideo.buffer_get_video_region_of_inte
 and its roi_type is a GLib quark (GLib.quark_to_string() names it: 'object'). A buffer carries
 the meta only while an object is tracked; the parameters' 'status' still says how it was measured.
 """
-import argparse
-import sys
+from cli import (FAILED, USAGE, Failure, gi_modules, gstreamer, parse_launch, parser, play, run,
+                 say, wait_for_end)
 
-import gi
-
-gi.require_version('Gst', '1.0')
-gi.require_version('GstVideo', '1.0')
-from gi.repository import GLib, Gst, GstVideo  # noqa: E402
+GLib, Gst, GstVideo = gi_modules('read_roi_meta', 'GLib', 'Gst', 'GstVideo')
 
 DEFAULT_PIPELINE = ('videotestsrc pattern=ball num-buffers=60 ! video/x-raw,width=320,height=240 ! '
                     'projtrack name=tracker inner-point-x=160 inner-point-y=120 ! fakesink')
@@ -55,53 +51,51 @@ def describe(buffer):
 
 def run_with_probe(pipeline):
     """Reads every buffer leaving the projtrack element named 'tracker', whatever the sink."""
+    tracker = pipeline.get_by_name('tracker')
+    if tracker is None:
+        raise Failure("the pipeline has no projtrack element named 'tracker' (name=tracker)",
+                      USAGE)
+
     def on_buffer(pad, info):
-        print(describe(info.get_buffer()), flush=True)
+        say(describe(info.get_buffer()))
         return Gst.PadProbeReturn.OK
 
-    pipeline.get_by_name('tracker').get_static_pad('src').add_probe(
-        Gst.PadProbeType.BUFFER, on_buffer)
-    pipeline.set_state(Gst.State.PLAYING)
-    msg = pipeline.get_bus().timed_pop_filtered(
-        Gst.CLOCK_TIME_NONE, Gst.MessageType.EOS | Gst.MessageType.ERROR)
-    if msg.type == Gst.MessageType.ERROR:
-        print('error:', msg.parse_error()[0].message, file=sys.stderr)
-        return 1
+    tracker.get_static_pad('src').add_probe(Gst.PadProbeType.BUFFER, on_buffer)
+    play(pipeline)
+    wait_for_end(pipeline)
     return 0
 
 
 def run_with_appsink(pipeline_text):
     """An app's way: projtrack's output into an appsink, samples pulled one by one."""
     tail = pipeline_text.rsplit('!', 1)[0]
-    pipeline = Gst.parse_launch(tail + '! appsink name=app sync=false')
+    pipeline = parse_launch(Gst, tail + '! appsink name=app sync=false')
     sink = pipeline.get_by_name('app')
-    pipeline.set_state(Gst.State.PLAYING)
-    while (sample := sink.emit('pull-sample')) is not None:
-        print(describe(sample.get_buffer()), flush=True)
-    error = pipeline.get_bus().pop_filtered(Gst.MessageType.ERROR)
-    pipeline.set_state(Gst.State.NULL)
+    play(pipeline)
+    try:
+        while (sample := sink.emit('pull-sample')) is not None:
+            if not say(describe(sample.get_buffer())):
+                return 0  # the reader has gone
+        error = pipeline.get_bus().pop_filtered(Gst.MessageType.ERROR)
+    finally:
+        pipeline.set_state(Gst.State.NULL)
     if error:
-        print('error:', error.parse_error()[0].message, file=sys.stderr)
-        return 1
+        raise Failure('pipeline error: ' + error.parse_error()[0].message, FAILED)
     return 0
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = parser(__doc__)
     ap.add_argument('--appsink', action='store_true',
                     help='pull samples from an appsink that replaces the last element')
     ap.add_argument('--pipeline', default=DEFAULT_PIPELINE,
                     help='a pipeline with a projtrack element named tracker')
     args = ap.parse_args()
-    Gst.init(None)
+    gstreamer()
     if args.appsink:
         return run_with_appsink(args.pipeline)
-    pipeline = Gst.parse_launch(args.pipeline)
-    try:
-        return run_with_probe(pipeline)
-    finally:
-        pipeline.set_state(Gst.State.NULL)
+    return run_with_probe(parse_launch(Gst, args.pipeline))
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    run('read_roi_meta', main)

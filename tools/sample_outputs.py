@@ -10,16 +10,22 @@ A sample in a Markdown file is a fenced block between two markers:
     <!-- end of sample -->
 
 and the overlay's pictures in docs/element/ are frames the element drew on opencv-doc's cup clip
-at 640x480 (when opencv-doc and the H.264 decoder are installed: ./run docs installs them).
+at 640x480 (when opencv-doc and the H.264 decoder are installed: ./run docs installs them), the
+Python example's picture in docs/python/ one it drew on the same clip.
 
     tools/sample_outputs.py [--build build]          # rewrite the samples and pictures
-    tools/sample_outputs.py --check [--build build]  # run the commands; fail where a sample no
-                                                     # longer has the shape of what runs (every
-                                                     # number masked: numbers vary run to run)
+    tools/sample_outputs.py --check [--build build]  # run the commands; fail where a sample
+                                                     # differs from what runs now
 
-Run with the plugin on GST_PLUGIN_PATH (./run docs sets it).
+The runs are deterministic (generated frames, the element's work counted in units, never in
+time), so the check compares every number, but for what each command measures in time (its
+`varies` patterns: timings), whose digits it masks.
+
+Run with the plugin on GST_PLUGIN_PATH (./run docs sets it); the Python module is taken from
+the build folder (PYTHONPATH=BUILD/python).
 """
 import argparse
+import difflib
 import gzip
 import os
 import re
@@ -29,41 +35,62 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PY = '/usr/bin/python3'
-DOCS = ['README.md', 'docs/element.md']
+DOCS = ['README.md', 'docs/element.md', 'docs/python.md']
 SAMPLE = re.compile(r'(<!-- sample: ([a-z0-9-]+) -->\n```[a-z]*\n)(.*?)(```\n<!-- end of sample -->)',
                     re.S)
 
 
+# What varies from run to run in a sample: times measured on the clock.
+TIMING = r'[\d.]+ ms'
+
+
 def commands(out):
-    """NAME: (what the sample shows as typed, the command run in `out`, how many lines to keep)."""
+    """NAME: (what the sample shows as typed, the command run in `out`, how many lines to keep,
+    patterns of what varies run to run)."""
     ex = os.path.join(ROOT, 'examples')
     return {
-        'demo': (None, [PY, f'{ex}/demo.py'], None),
+        'demo': (None, [PY, f'{ex}/demo.py'], None, [TIMING]),
         'cursor3d': ('$ GST_PLUGIN_PATH=$PWD/build/gst examples/cursor3d.py --generated',
-                     [PY, f'{ex}/cursor3d.py', '--generated'], None),
+                     [PY, f'{ex}/cursor3d.py', '--generated'], None, []),
         'print-features': ('$ GST_PLUGIN_PATH=$PWD/build/gst examples/print_features.py | head -4',
-                           [PY, f'{ex}/print_features.py'], 4),
+                           [PY, f'{ex}/print_features.py'], 4, [TIMING]),
         'read-roi-meta': ('$ GST_PLUGIN_PATH=$PWD/build/gst examples/read_roi_meta.py | head -3',
-                          [PY, f'{ex}/read_roi_meta.py'], 3),
+                          [PY, f'{ex}/read_roi_meta.py'], 3, []),
         'pointer-dry-run': ('$ GST_PLUGIN_PATH=$PWD/build/gst examples/pointer_uinput.py '
                             '--dry-run --generated | head -7',
-                            [PY, f'{ex}/pointer_uinput.py', '--dry-run', '--generated'], 7),
+                            [PY, f'{ex}/pointer_uinput.py', '--dry-run', '--generated'], 7, []),
+        'track-numpy': ('$ PYTHONPATH=build/python examples/track_numpy.py --frames 3',
+                        [PY, f'{ex}/track_numpy.py', '--frames', '3'], None, [TIMING]),
     }
 
 
-def run(name, out):
+def run(name, out, build):
     """The command's output, run in `out` as a user runs it in the source tree (relative paths
     such as out/demo.webm land in `out`)."""
-    shown, cmd, keep = commands(out)[name]
-    text = subprocess.run(cmd, cwd=out, capture_output=True, text=True, check=True,
-                          timeout=600).stdout
-    lines = [line for line in re.split(r'\r?\n', text) if line.strip()]
+    shown, cmd, keep, _ = commands(out)[name]
+    env = dict(os.environ, PYTHONPATH=os.path.join(build, 'python'))
+    done = subprocess.run(cmd, cwd=out, capture_output=True, text=True, timeout=600, env=env)
+    if done.returncode != 0:
+        sys.exit(f'sample_outputs: {name} failed (exit code {done.returncode}):\n{done.stderr}')
+    lines = [line for line in re.split(r'\r?\n', done.stdout) if line.strip()]
     lines = lines[:keep] if keep else lines
     return '\n'.join(([shown] if shown else []) + lines) + '\n'
 
 
-def shape(text):
-    return re.sub(r'[-+]?\d+(\.\d+)?', 'N', text)
+def masked(text, varies):
+    """`text` with the numbers in what matches a pattern of `varies` masked."""
+    for pattern in varies:
+        text = re.sub(pattern, lambda m: re.sub(r'\d+(\.\d+)?', '#', m.group(0)), text)
+    return text
+
+
+def difference(shown, now, varies):
+    """How sample `shown` differs from output `now` (a diff), or '' when only what varies does."""
+    a, b = masked(shown, varies), masked(now, varies)
+    if a == b:
+        return ''
+    return ''.join(difflib.unified_diff(a.splitlines(True), b.splitlines(True), 'shown', 'now',
+                                        n=1))
 
 
 def overlay_pictures(out, build):
@@ -89,12 +116,24 @@ def overlay_pictures(out, build):
         print(f'sample_outputs: wrote docs/element/{name}')
 
 
+def python_picture(build):
+    """The Python example's frame 80 of the cup: projtrack's silhouette and box, KCF's box."""
+    picture = os.path.join(ROOT, 'docs', 'python', 'track-numpy.png')
+    os.makedirs(os.path.dirname(picture), exist_ok=True)
+    subprocess.run([PY, os.path.join(ROOT, 'examples', 'track_numpy.py'), '--frames', '81',
+                    '--picture', picture, '--picture-frame', '80'], check=True, timeout=600,
+                   stdout=subprocess.DEVNULL, env=dict(os.environ,
+                                                       PYTHONPATH=os.path.join(build, 'python')))
+    print('sample_outputs: wrote docs/python/track-numpy.png')
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument('--build', default='build')
     ap.add_argument('--check', action='store_true')
     args = ap.parse_args()
-    out = os.path.join(ROOT, args.build, 'samples')
+    build = os.path.join(ROOT, args.build)
+    out = os.path.join(build, 'samples')
     os.makedirs(out, exist_ok=True)
     outputs, problems = {}, []
     for doc in DOCS:
@@ -104,11 +143,12 @@ def main():
         def replace(m):
             name = m.group(2)
             if name not in outputs:
-                outputs[name] = run(name, out)
-            if args.check and shape(outputs[name]) != shape(m.group(3)):
-                problems.append(f'{doc}: sample {name} differs from what runs now:\n'
-                                f'{m.group(3)}--- now:\n{outputs[name]}')
-            return m.group(1) + outputs[name] + m.group(4)
+                outputs[name] = run(name, out, build)
+            diff = difference(m.group(3), outputs[name], commands(out)[name][3])
+            if args.check and diff:
+                problems.append(f'{doc}: sample {name} differs from what runs now:\n{diff}')
+            # A sample that differs only in what varies (timings) is kept as it is.
+            return m.group(1) + outputs[name] + m.group(4) if diff else m.group(0)
         new = SAMPLE.sub(replace, text)
         if not args.check and new != text:
             open(path, 'w').write(new)
@@ -123,6 +163,7 @@ def main():
               + (' (./run docs regenerates them)' if problems else ''))
         return 1 if problems else 0
     overlay_pictures(out, args.build)
+    python_picture(build)
     return 0
 
 

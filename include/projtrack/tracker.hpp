@@ -12,6 +12,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -71,6 +72,12 @@ class Tracker {
   // it was; so does every frame while the flag is set. Null: none. The flag must outlive the
   // Tracker (or be replaced).
   void set_stop_flag(const std::atomic<bool>* stop);
+  // The object's silhouette as the tracker holds it after the last frame (the appearance model:
+  // that frame's when it was accepted, else the last accepted one, as TrackResult::features),
+  // drawn into the caller's width × height mask of that frame (rows `stride` bytes apart): 255 on
+  // the object, 0 elsewhere. False, with the mask all 0, when the tracker holds none (the edges
+  // model, no object, a dropped track) or the mask's shape is unusable (no data, stride < width).
+  bool silhouette(std::uint8_t* mask, int width, int height, std::ptrdiff_t stride) const;
 
   // One frame taken at `t` seconds, with edges computed here with `edge_params`: only around the
   // object while tracking. A frame with chroma gives the appearance model its colours; a gray

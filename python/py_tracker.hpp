@@ -1,0 +1,56 @@
+// The tracker for Python: numpy frames in, results out, with OpenCV's tracker API beside the
+// library's (init(frame, box) then update(frame) -> (ok, box)).
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <mutex>
+
+#include "frames.hpp"
+#include "projtrack/tracker.hpp"
+#include "result.hpp"
+#include "settings.hpp"
+
+namespace projtrack::python {
+
+// Where init() or track() starts a new object: `obj` read as an inner point (x, y), a box
+// (x, y, width, height) or, for Either, whichever its count of numbers says.
+struct Where {
+  enum Kind { Nowhere, Point, Box, Either };
+  pybind11::handle obj;
+  Kind kind = Nowhere;
+  bool restart = false;  // init(): the frames' time starts over at 0 too
+};
+
+class PyTracker {
+ public:
+  explicit PyTracker(const Settings& s) : settings_(s) {}
+
+  // The library's frame: seeds from `where` when given, tracks `frame` at `t` seconds (None:
+  // frames counted at the settings' fps); the silhouette's mask when `with_mask`.
+  Result track(const pybind11::handle& frame, const Where& where, const pybind11::object& t,
+               bool with_mask);
+  // OpenCV's pair: a new object from `where` (a point (x, y) or a box (x, y, w, h)) on `frame`;
+  // then (ok, (x, y, w, h)) per frame, (False, (0, 0, 0, 0)) when nothing was measured.
+  bool init(const pybind11::handle& frame, const pybind11::handle& where);
+  pybind11::tuple update(const pybind11::handle& frame);
+  void reset();
+
+  const Settings& settings() const { return settings_; }
+  long frames() const { return frames_; }
+
+ private:
+  Settings settings_;
+  Tracker tracker_;
+  FrameReader reader_;
+  std::mutex mutex_;  // one frame at a time: track() runs without the GIL
+  // Frames tracked since the start or reset(); frames() may read it while a thread tracks.
+  std::atomic<long> frames_{0};
+};
+
+// The Tracker class in module `m`.
+void bind_tracker(pybind11::module_& m);
+
+}  // namespace projtrack::python
