@@ -272,8 +272,15 @@ bool ObjectFinder::nearest_apart_region(Point2i seed, const FinderParams& p, Mas
   return true;
 }
 
-bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
-                             Mask& out, std::string& why) {
+void ObjectFinder::clip_to(const Rect& box, Mask& m) {
+  for (int y = 0; y < m.rect().height; ++y)
+    for (int x = 0; x < m.rect().width; ++x)
+      if (!box.contains({x + m.rect().x, y + m.rect().y})) m.row(y)[x] = 0;
+  m.crop();
+}
+
+bool ObjectFinder::around_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
+                               const Rect* box, Mask& out, std::string& why) {
   load(frame, p, work_);
   foreground(p);
   const int w = candidates_.rect().width, h = candidates_.rect().height, s = work_.scale();
@@ -284,24 +291,36 @@ bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const F
   }
   // The user's object may fill most of the picture (kUserMaxArea), never all of it.
   const double most = kUserMaxArea * w * h;
-  const bool apart = nearest_apart_region(seed, p, out) && moments(out).area <= most;
+  bool apart = nearest_apart_region(seed, p, out) && moments(out).area <= most;
+  if (apart && box) clip_to(*box, out);
   apart_from_border_ = apart;
   // The border shows the seed's own colour: the region of that colour around the seed is a
-  // candidate too; the one whose colours stand apart from its surroundings' more is the object
-  // (a white disc on a black target, before a wall as white: the disc, not the target).
-  if (!candidates_.at(seed) &&
-      seed_region_.grow(work_.view(), {0, 0}, seed, 1, most, by_colour_, ops_) &&
-      (!apart || colour_separation(work_.view(), by_colour_, ops_, enclosure_) >
-                     colour_separation(work_.view(), out, ops_, enclosure_))) {
+  // candidate too. Within the user's box, the one that fills more of it is the object; else the
+  // one whose colours stand further apart from its surroundings' (a white disc on a black
+  // target, before a wall as white: the disc, not the target).
+  if (candidates_.at(seed) ||
+      !seed_region_.grow(work_.view(), {0, 0}, seed, 1, most, by_colour_, ops_)) {
+    if (!apart)
+      why =
+          "no region around the inner point: neither its own colour nor one the frame's "
+          "border does not show";
+    return apart;
+  }
+  if (box) clip_to(*box, by_colour_);
+  const bool by_colour =
+      !apart || (box ? moments(by_colour_).area > moments(out).area
+                     : colour_separation(work_.view(), by_colour_, ops_, enclosure_) >
+                           colour_separation(work_.view(), out, ops_, enclosure_));
+  if (by_colour) {
     out.swap(by_colour_);
     apart_from_border_ = false;
-    return true;
   }
-  if (!apart)
-    why =
-        "no region around the inner point: neither its own colour nor one the frame's border "
-        "does not show";
-  return apart;
+  return true;
+}
+
+bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
+                             Mask& out, std::string& why) {
+  return around_seed(frame, seed_pixel, p, nullptr, out, why);
 }
 
 bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const FinderParams& p,
@@ -315,15 +334,12 @@ bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const Finde
       1, work_scale(static_cast<double>(frame.luma.width) * frame.luma.height, p.work_pixels));
   const Rect wb = to_work(b, s);
   const Point2i centre{b.x + b.width / 2, b.y + b.height / 2};
-  if (from_seed(frame, centre, p, out, why)) {  // within the box
-    for (int y = 0; y < out.rect().height; ++y)
-      for (int x = 0; x < out.rect().width; ++x)
-        if (!wb.contains({x + out.rect().x, y + out.rect().y})) out.row(y)[x] = 0;
-    out.crop();
-    if (!out.empty() && moments(out).area >= 0.2 * wb.width * wb.height) return true;
-  }
+  if (around_seed(frame, centre, p, &wb, out, why) && !out.empty() &&
+      moments(out).area >= 0.2 * wb.width * wb.height)
+    return true;
   // Nothing of its own colours fills the box: the user's box is the object's outline.
   load(frame, p, work_);
+  apart_from_border_ = false;
   out.reset(wb & work_.rect());
   const double cx = wb.x + wb.width / 2.0 - 0.5, cy = wb.y + wb.height / 2.0 - 0.5;
   const double rx = wb.width / 2.0, ry = wb.height / 2.0;

@@ -96,6 +96,10 @@ class ObjectFinder {
   // The region of colours the border does not show at `seed` or nearest it (within a twentieth
   // of the frame), its holes filled; false when there is none. Needs foreground().
   bool nearest_apart_region(Point2i seed, const FinderParams& p, Mask& out);
+  // from_seed(), and from_box() with `box` (work coordinates): the candidates kept within it.
+  bool around_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
+                   const Rect* box, Mask& out, std::string& why);
+  static void clip_to(const Rect& box, Mask& m);
   // The smallest labelled region of at least `least` pixels, other than `inner`, that encloses
   // work pixel `p` (it lies in the region's holes); 0 for none.
   int enclosing_region(Point2i p, int inner, double least);

@@ -133,7 +133,7 @@ void SilhouetteModel::take_unknown_inside(Point2i seed, Mask& s) {
   ops_.fill_holes(s);
 }
 
-void SilhouetteModel::cut_arm(Mask& s, const Rect& frame, Point2i seed,
+void SilhouetteModel::cut_arm(Mask& s, const Mask& before, const Rect& frame, Point2i seed,
                               const ObjectModelParams& p) {
   const MaskMoments m = moments(s);
   const Rect& b = m.bbox;
@@ -149,15 +149,24 @@ void SilhouetteModel::cut_arm(Mask& s, const Rect& frame, Point2i seed,
   }
   pieces_.label(grown_.view(), false);
   const std::int32_t seed_piece = g.contains(seed) ? pieces_.row(seed.y - g.y)[seed.x - g.x] : 0;
-  arm_.assign(static_cast<std::size_t>(pieces_.count()) + 1, 0);
+  // A piece is the arm when it reaches the frame's border and most of it is new: an object cut
+  // by the frame's edge was there before, an arm that grew along the hand was not.
+  const std::size_t n = static_cast<std::size_t>(pieces_.count()) + 1;
+  arm_.assign(n, 0);
+  piece_size_.assign(n, 0);
+  piece_before_.assign(n, 0);
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
       const std::int32_t l = pieces_.row(y)[x];
+      if (!l) continue;
       const int fx = x + g.x, fy = y + g.y;
-      if (l && l != seed_piece &&
+      ++piece_size_[l];
+      piece_before_[l] += before.at({fx, fy});
+      if (l != seed_piece &&
           (fx <= frame.x || fy <= frame.y || fx >= frame.right() - 1 || fy >= frame.bottom() - 1))
         arm_[static_cast<std::size_t>(l)] = 1;
     }
+  for (std::size_t l = 1; l < n; ++l) arm_[l] = arm_[l] && 2 * piece_before_[l] < piece_size_[l];
   for (int y = 0; y < g.height; ++y) {
     std::uint8_t* o = grown_.row(y);
     for (int x = 0; x < g.width; ++x)
@@ -218,7 +227,7 @@ bool SilhouetteModel::start(const ColorView& frame, EdgeSource& edges, const Mas
       return false;
     }
     if (round == 0) take_unknown_inside(seed, out);
-    cut_arm(out, whole, seed, p);
+    cut_arm(out, prior_, whole, seed, p);
     learn(learning_core(out, p), out, p.ring, 1.0);
     score();
     const bool grew = moments(out).area > 1.02 * m.area;
@@ -274,7 +283,7 @@ bool SilhouetteModel::find(const ColorView& frame, EdgeSource& edges, Point2d mo
     // it is learned (the deepest point of the prior, a distance transform, only then).
     MaskMoments om = moments(out);
     if (reaches_border(om.bbox, frame_work)) {
-      cut_arm(out, frame_work, hint.x >= 0 ? to_work(hint) : ops_.deepest(prior_).first, p);
+      cut_arm(out, prior_, frame_work, hint.x >= 0 ? to_work(hint) : ops_.deepest(prior_).first, p);
       om = moments(out);
     }
     if (om.area <= 0) return false;

@@ -58,8 +58,11 @@ class SilhouetteModel {
             const ObjectModelParams& p);
   // The likelihood of the loaded work frame, into likelihood_ (load() does it).
   void score();
-  // The arm cut (ObjectModelParams::arm_cut) of `s`, when it reaches `frame` (work coordinates).
-  void cut_arm(Mask& s, const Rect& frame, Point2i seed, const ObjectModelParams& p);
+  // The arm cut (ObjectModelParams::arm_cut) of `s`, when it reaches `frame` (work coordinates):
+  // the pieces that reach the border, hold not the seed and lie mostly outside `before` (the
+  // silhouette it grew from) go.
+  void cut_arm(Mask& s, const Mask& before, const Rect& frame, Point2i seed,
+               const ObjectModelParams& p);
   // Moves `prior` onto the object-like pixels within `window` work px of its box.
   void recentre(Mask& prior, int window);
   // Learns the colours of `object` against a ring around the convex hull of `silhouette` (on this
@@ -78,7 +81,8 @@ class SilhouetteModel {
   EdgeMap edge_map_;
   MaskOps ops_;
   RegionLabels pieces_;            // cut_arm(): the pieces left by the opening
-  std::vector<std::uint8_t> arm_;  // per piece: it reaches the frame's border
+  std::vector<std::uint8_t> arm_;  // per piece: it is the arm (cut_arm)
+  std::vector<std::int64_t> piece_size_, piece_before_;  // per piece: its pixels, those in before
   int scale_ = 1;
   int unlearned_ = 0;  // accepted frames since the model last learned
   // What of a first silhouette `s` the start learns the colours from (in core_ or `s` itself):

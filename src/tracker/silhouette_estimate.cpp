@@ -9,9 +9,9 @@ namespace projtrack {
 namespace {
 
 // The grid's and the blocks' cells are at most a kLeastCellsAcross-th of the object's √area: a
-// small object is measured by as many grid lines as a large one (its outline is closed, so a
-// finer grid costs work, never a leak).
-constexpr double kLeastCellsAcross = 8;
+// small object is still measured by a few grid lines across, not by one or two (its outline is
+// closed, so a finer grid costs work, never a leak).
+constexpr double kLeastCellsAcross = 4;
 
 int to_work(int v, int scale) { return v < 0 ? -1 : v / scale; }
 
