@@ -41,7 +41,7 @@ struct TrackerParams {
   Acquisition acquisition = Acquisition::Auto;
   AutoAcquisition strategy = AutoAcquisition::CompactMovingRegion;
   MotionDetector::Params motion{25, 4};
-  double min_motion = 0.002;  // share of the frame that must change before Auto looks
+  double min_motion = 0.0005;  // share of the frame that must change before Auto looks
   int candidates = 12;        // seeds CompactMovingRegion tries per frame
   int min_acquired_side = 8;  // px: a region thinner than this is not acquired
 

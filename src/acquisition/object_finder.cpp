@@ -378,7 +378,7 @@ bool ObjectFinder::from_motion(const ColorView& frame, const MotionDetector::Mot
            (static_cast<double>(r.box.width) * r.box.height);
   });
   if (!label) {
-    why = "no moving region of its own colours, wholly in view";
+    why = kNoMovingRegion;
     return false;
   }
   count_motion(before, area_of([&](int l, const RegionStats&) { return l == label; }),
@@ -390,6 +390,92 @@ bool ObjectFinder::from_motion(const ColorView& frame, const MotionDetector::Mot
   copy_region(label, out);
   seed = to_frame_pixel(ops_.deepest(out).first, work_.scale());
   return true;
+}
+
+bool ObjectFinder::from_moving_blob(const ColorView& frame, const MotionDetector::Motion& motion,
+                                    const MotionDetector::Motion& before, const FinderParams& p,
+                                    Mask& out, Point2i& seed, std::string& why) {
+  load(frame, p, work_);
+  const int w = work_.rect().width, h = work_.rect().height, s = work_.scale();
+  // Where the frame changed, at the finder's scale, its samples joined across their spacing.
+  blobs_.reset({0, 0, w, h});
+  for (const Point2i& q : motion.points)
+    if (q.x / s < w && q.y / s < h) blobs_.row(q.y / s)[q.x / s] = 1;
+  ops_.dilate(blobs_, std::max(1, (motion.step + s - 1) / s), opened_);
+  regions_.label(opened_.view(), false);
+  measure_regions();
+  const double frame_area = static_cast<double>(w) * h;
+  const int label = best_region([&](int l, const RegionStats& r) {
+    const Rect& b = r.box;
+    const bool in_view = b.x > 0 && b.y > 0 && b.right() < w && b.bottom() < h;
+    // What changed is the object's outline as it moves: its box, not its pixels, is its size.
+    const double size = static_cast<double>(b.width) * b.height;
+    if (!in_view || size < p.min_area * frame_area || size > p.max_area * frame_area) return -1.0;
+    return static_cast<double>(r.size);  // the largest moving blob wholly in view
+  });
+  if (!label) {
+    why = "nothing that moves is wholly in view";
+    return false;
+  }
+  // It moved on the last frame that showed motion too (a repeated frame shows none).
+  const Rect box = stats_[label].box;
+  std::size_t moved_before = 0;
+  for (const Point2i& q : before.points) moved_before += box.contains({q.x / s, q.y / s});
+  if (static_cast<double>(moved_before) * before.step * before.step <
+      0.5 * p.min_moving * static_cast<double>(stats_[label].size) * s * s) {
+    why = "what moves there did not move on the last frame: waiting";
+    return false;
+  }
+  // The moving blob is a box around the object and where it was: the object is found in it as
+  // in a user's box, by its colours.
+  const Rect frame_box = to_frame(box, s, frame.luma.width, frame.luma.height);
+  if (!around_seed(frame, {frame_box.x + frame_box.width / 2, frame_box.y + frame_box.height / 2},
+                   p, &box, out, why) ||
+      moments(out).area < 0.2 * box.width * box.height) {
+    why = "what moves there has no colours of its own";
+    return false;
+  }
+  if (!mask_moves(out, motion, p) || within_apart_region(out)) {
+    why = "what moves there is a part of a larger region that hardly moves";
+    return false;
+  }
+  seed = to_frame_pixel(ops_.deepest(out).first, s);
+  return true;
+}
+
+bool ObjectFinder::within_apart_region(const Mask& m) {
+  ops_.dilate(m, 1, enclosure_);
+  const Rect& r = enclosure_.rect();
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x) {
+      const Point2i c{x + r.x, y + r.y};
+      if (enclosure_.row(y)[x] && !m.at(c) && !candidates_.at(c)) return false;
+    }
+  return true;
+}
+
+bool ObjectFinder::mask_moves(const Mask& m, const MotionDetector::Motion& motion,
+                              const FinderParams& p) {
+  const int s = work_.scale();
+  ops_.dilate(m, 1, enclosure_);
+  std::int64_t inside = 0, near = 0, size = 0, outline = 0;
+  for (const Point2i& q : motion.points) {
+    const Point2i w{q.x / s, q.y / s};
+    inside += m.at(w);
+    near += enclosure_.at(w);
+  }
+  const Rect& r = m.rect();
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x) {
+      if (!m.row(y)[x]) continue;
+      ++size;
+      const Point2i c{x + r.x, y + r.y};
+      outline += !m.at({c.x - 1, c.y}) || !m.at({c.x + 1, c.y}) || !m.at({c.x, c.y - 1}) ||
+                 !m.at({c.x, c.y + 1});
+    }
+  const double per_sample = static_cast<double>(motion.step) * motion.step / (1.0 * s * s);
+  return inside * per_sample >= p.min_moving * static_cast<double>(size) ||
+         near * per_sample >= p.min_moving_outline * 3.0 * static_cast<double>(outline);
 }
 
 bool ObjectFinder::from_model(const ColorView& frame, const AppearanceModel& model,

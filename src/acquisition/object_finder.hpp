@@ -16,6 +16,11 @@
 
 namespace projtrack {
 
+// What from_motion() says when no region of its own colours moves at all (rather than one that
+// moves but must wait).
+inline constexpr const char* kNoMovingRegion =
+    "no moving region of its own colours, wholly in view";
+
 // Every silhouette it finds is in work coordinates at scale() (see WorkFrame).
 class ObjectFinder {
  public:
@@ -53,6 +58,12 @@ class ObjectFinder {
   bool from_motion(const ColorView& frame, const MotionDetector::Motion& motion,
                    const MotionDetector::Motion& before, const FinderParams& p, Mask& out,
                    Point2i& seed, std::string& why);
+  // The moving object when no region of its own colours is (its colours are the border's too):
+  // the largest blob of changed samples wholly in view that moved on the last frame too, and
+  // in it, as in a user's box, the region of the object's colours.
+  bool from_moving_blob(const ColorView& frame, const MotionDetector::Motion& motion,
+                        const MotionDetector::Motion& before, const FinderParams& p, Mask& out,
+                        Point2i& seed, std::string& why);
   // An object seen before: of the regions whose colours the model finds object-like, the one
   // closest in size to `area` (frame px², within `factor`) and nearest `near`, that moves.
   bool from_model(const ColorView& frame, const AppearanceModel& model,
@@ -100,6 +111,12 @@ class ObjectFinder {
   bool around_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
                    const Rect* box, Mask& out, std::string& why);
   static void clip_to(const Rect& box, Mask& m);
+  // Whether `m` (work coordinates) moves as moves() asks of a labelled region: by its area, or
+  // along its outline.
+  bool mask_moves(const Mask& m, const MotionDetector::Motion& motion, const FinderParams& p);
+  // Whether everything around `m` is of colours the border does not show: `m` is a part (a
+  // print) of a larger object, not one itself. Needs foreground().
+  bool within_apart_region(const Mask& m);
   // The smallest labelled region of at least `least` pixels, other than `inner`, that encloses
   // work pixel `p` (it lies in the region's holes); 0 for none.
   int enclosing_region(Point2i p, int inner, double least);
@@ -114,7 +131,7 @@ class ObjectFinder {
   std::vector<std::uint32_t> border_counts_;
   std::vector<std::uint8_t> background_;  // per colour bin
   std::vector<std::uint8_t> like_;
-  Mask candidates_, opened_, enclosure_, by_colour_;
+  Mask candidates_, opened_, enclosure_, by_colour_, blobs_;
   RegionLabels regions_;
   SeedRegion seed_region_;
   bool apart_from_border_ = true;

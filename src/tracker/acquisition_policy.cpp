@@ -50,7 +50,11 @@ bool find_by_motion_or_colours(TrackerState& s, const ColorView& frame, const Tr
                             tp.leak_factor, s.track().lost_centroid, fp, first, seed, out.why);
     return out.resumed;
   }
-  return s.finder.from_motion(frame, s.moved, s.moved_before, fp, first, seed, out.why);
+  if (s.finder.from_motion(frame, s.moved, s.moved_before, fp, first, seed, out.why)) return true;
+  // No region of colours the border does not show moves: the moving object's colours are the
+  // border's too (a dark puck on a table with dark edges); look where the frame moves.
+  if (out.why != kNoMovingRegion) return false;
+  return s.finder.from_moving_blob(frame, s.moved, s.moved_before, fp, first, seed, out.why);
 }
 
 // The finder's first silhouette, into `first`, and the point it grew from, into `seed`.
@@ -193,8 +197,9 @@ AfterRefusal after_refusal(const TrackerState& s, const TrackerParams& tp, bool 
   return out;
 }
 
-void drop_refused_track(TrackerState& s) {
-  if (s.model() == ObjectModelKind::Appearance)
+void drop_refused_track(TrackerState& s, const TrackerParams& tp) {
+  // A track accepted on one frame only was never an object: its colours are not searched for.
+  if (s.model() == ObjectModelKind::Appearance && s.track().accepted > 1)
     s.drop(TrackerState::Keep::Colours);
   else
     s.reset();

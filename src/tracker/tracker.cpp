@@ -143,7 +143,7 @@ void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult
   state.refuse();
   const AfterRefusal next = after_refusal(state, tp, drop_now);
   r.detail += next.note;
-  if (next.drop) drop_refused_track(state);
+  if (next.drop) drop_refused_track(state, tp);
 }
 
 void Tracker::Impl::stopped(const Features& f, const TrackerParams& tp, TrackResult& r) {

@@ -30,6 +30,7 @@ void TrackerState::drop(Keep keep) {
   t.seed_box.reset();
   t.last.reset();
   t.velocity = {0, 0};
+  t.accepted = 0;
   t.refused_in_a_row = 0;
   t.refusals = 0;
   t.searched = 0;
@@ -57,6 +58,7 @@ bool TrackerState::accept(const Features& f, bool resumed, double t, int width, 
                           const TrackerParams& tp) {
   Track& k = track_;
   const bool starts = !k.last;
+  k.accepted = starts ? 1 : k.accepted + 1;
   if (starts) {
     k.seeded = k.inner.has_value() && !resumed;
     k.still = 0;

@@ -28,6 +28,7 @@ class TrackerState {
     std::optional<Rect> seed_box;  // the user's box, until the track starts from it
     std::optional<Features> last;  // the last accepted estimate
     Point2d velocity;              // of the centroid between the last two accepted frames, px
+    int accepted = 0;              // frames accepted since the track started
     int refused_in_a_row = 0;      // refused frames since the last accepted one
     std::uint32_t refusals = 0;    // a bit per frame since the track started, newest lowest
     bool seeded = false;           // the track started from the user's point or box
