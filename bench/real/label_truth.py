@@ -19,6 +19,9 @@ import os
 import cv2
 import numpy as np
 
+from truth_geometry import farthest_inside
+from truth_geometry import outlines_of as outlines
+
 
 def disc(size):
     return cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (size, size))
@@ -98,23 +101,6 @@ def frames_of(path):
         if not ok:
             return
         yield frame
-
-
-def farthest_inside(mask):
-    """The silhouette's pixel farthest from its border (ties: the first in raster order)."""
-    dist = cv2.distanceTransform(np.pad(mask, 1), cv2.DIST_L2, 5)[1:-1, 1:-1]
-    y, x = np.unravel_index(int(np.argmax(dist)), dist.shape)
-    return int(x), int(y)
-
-
-def outlines(mask):
-    contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_SIMPLE)
-    out = []
-    for i, c in enumerate(contours):
-        poly = cv2.approxPolyDP(c, 1.0, True).reshape(-1, 2)
-        hole = hierarchy is not None and hierarchy[0][i][3] >= 0
-        out.append(('hole' if hole else 'outer', poly))
-    return out
 
 
 def sheet(frames, masks, first, step, path):
