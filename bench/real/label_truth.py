@@ -19,19 +19,8 @@ import os
 import cv2
 import numpy as np
 
-from truth_geometry import farthest_inside
+from truth_geometry import disc, farthest_inside, fill_holes
 from truth_geometry import outlines_of as outlines
-
-
-def disc(size):
-    return cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (size, size))
-
-
-def fill_holes(mask):
-    """Every pixel not 4-connected to the frame's border through zeros."""
-    background = np.pad((mask == 0).astype(np.uint8), 1, constant_values=1)
-    _, labels = cv2.connectedComponents(background, connectivity=4)
-    return (labels != labels[0, 0])[1:-1, 1:-1].astype(np.uint8)
 
 
 def main_components(mask, near, min_share):

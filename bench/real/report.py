@@ -20,6 +20,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
 
+import clip_set  # noqa: E402
 import sections  # noqa: E402
 from results import Results  # noqa: E402
 from scoring import AREA_TOLERANCE, area_ratio, categories  # noqa: E402
@@ -29,7 +30,7 @@ from targets import GOAL_NO_SEED, START_TEXT  # noqa: E402
 
 README_BEGIN = "<!-- real-footage summary: written by bench/real/report.py -->"
 README_END = "<!-- end of real-footage summary -->"
-MOST_SHEETS = 8  # a clip's contact sheets, at most
+MOST_SHEETS = 6  # a clip's contact sheets, at most
 
 
 def failing(res, entry, tracker, start):
@@ -45,7 +46,7 @@ def chosen_sheets(res):
     """[(entry, tracker, start, frames)]: the telling shortfalls. On each clip as decoded every
     start that falls short (the worst quarter point for the four); on a variant the deepest point
     and the box when they fall short on the edge or half variant, or where the clip as decoded
-    met them (the variant is the cause). At most MOST_SHEETS a clip."""
+    met them (the variant is the cause). At most MOST_SHEETS a clip, in priority()'s order."""
     out = []
     for clip in res.clips:
         mine = []
@@ -64,8 +65,20 @@ def chosen_sheets(res):
                     continue
                 frames = res.score_of(entry, name)["missed_frames"] or off_area(res, entry, name)
                 mine.append((entry, name, start, pick_frames(frames)))
+        mine.sort(key=lambda s: priority(res.variant[s[0]], s[2]))
         out += mine[:MOST_SHEETS]
     return out
+
+
+FIRST = [("", "deepest"), ("", "box"), ("edge", "deepest"), ("edge", "box"), ("half", "deepest"),
+         ("", "quarter"), ("", "none"), ("half", "box")]
+
+
+def priority(variant, start):
+    """The order in which a clip's shortfalls get one of its MOST_SHEETS sheets: the clip as
+    decoded and the edge and half variants first, then the lighting variants."""
+    return (FIRST.index((variant, start)) if (variant, start) in FIRST else len(FIRST),
+            clip_set.ALL_VARIANTS.index(variant) if variant in clip_set.ALL_VARIANTS else -1)
 
 
 def off_area(res, entry, name):

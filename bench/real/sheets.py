@@ -15,7 +15,7 @@ except ImportError:  # sheets need python3-opencv; the tables do not
     cv2 = None
 
 TILES = 8            # missed frames a sheet shows, spread over the misses
-TILE_W = 320         # a tile's width (its height follows the frame's shape)
+TILE_W = 240         # a tile's width (its height follows the frame's shape)
 SMALL = 1 / 8        # an object whose box's longer side is under this share of the frame's
 ZOOM_SIDES = 6       # is shown in a crop this many times its longer side wide
 
@@ -83,7 +83,7 @@ def tile(img, text):
     img = cv2.resize(img, (TILE_W, max(1, round(TILE_W * img.shape[0] / img.shape[1]))),
                      interpolation=cv2.INTER_NEAREST)
     img = cv2.copyMakeBorder(img, 0, 18, 0, 0, cv2.BORDER_CONSTANT, value=(0, 0, 0))
-    cv2.putText(img, text, (4, img.shape[0] - 5), cv2.FONT_HERSHEY_SIMPLEX, 0.42,
+    cv2.putText(img, text, (4, img.shape[0] - 5), cv2.FONT_HERSHEY_SIMPLEX, 0.34,
                 (255, 255, 255), 1)
     return img
 
@@ -111,5 +111,5 @@ def contact_sheet(frames_dir, rows, truth, outlines, frames, path, overlay):
         tiles.append(np.zeros_like(tiles[0]))
     sheet = np.vstack([np.hstack(tiles[k:k + cols]) for k in range(0, len(tiles), cols)])
     os.makedirs(os.path.dirname(path), exist_ok=True)
-    cv2.imwrite(path, sheet, [cv2.IMWRITE_JPEG_QUALITY, 80])
+    cv2.imwrite(path, sheet, [cv2.IMWRITE_JPEG_QUALITY, 75])
     return True

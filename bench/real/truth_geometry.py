@@ -63,6 +63,18 @@ def transform(mask, mirror=False, crop=None, scale=1.0):
     return np.ascontiguousarray(mask, dtype=np.uint8)
 
 
+def disc(size):
+    """A disc-shaped structuring element (the labellers' morphology)."""
+    return cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (size, size))
+
+
+def fill_holes(mask):
+    """Every pixel not 4-connected to the frame's border through zeros."""
+    background = np.pad((mask == 0).astype(np.uint8), 1, constant_values=1)
+    _, labels = cv2.connectedComponents(background, connectivity=4)
+    return (labels != labels[0, 0])[1:-1, 1:-1].astype(np.uint8)
+
+
 def farthest_inside(mask):
     """The silhouette's pixel farthest from its border (ties: the first in raster order), as the
     labels' inner point."""
