@@ -19,16 +19,8 @@ import os
 import cv2
 import numpy as np
 
-
-def disc(size):
-    return cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (size, size))
-
-
-def fill_holes(mask):
-    """Every pixel not 4-connected to the frame's border through zeros."""
-    background = np.pad((mask == 0).astype(np.uint8), 1, constant_values=1)
-    _, labels = cv2.connectedComponents(background, connectivity=4)
-    return (labels != labels[0, 0])[1:-1, 1:-1].astype(np.uint8)
+from truth_geometry import disc, farthest_inside, fill_holes
+from truth_geometry import outlines_of as outlines
 
 
 def main_components(mask, near, min_share):
@@ -98,23 +90,6 @@ def frames_of(path):
         if not ok:
             return
         yield frame
-
-
-def farthest_inside(mask):
-    """The silhouette's pixel farthest from its border (ties: the first in raster order)."""
-    dist = cv2.distanceTransform(np.pad(mask, 1), cv2.DIST_L2, 5)[1:-1, 1:-1]
-    y, x = np.unravel_index(int(np.argmax(dist)), dist.shape)
-    return int(x), int(y)
-
-
-def outlines(mask):
-    contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_SIMPLE)
-    out = []
-    for i, c in enumerate(contours):
-        poly = cv2.approxPolyDP(c, 1.0, True).reshape(-1, 2)
-        hole = hierarchy is not None and hierarchy[0][i][3] >= 0
-        out.append(('hole' if hole else 'outer', poly))
-    return out
 
 
 def sheet(frames, masks, first, step, path):

@@ -1,11 +1,10 @@
 #!/usr/bin/python3
-"""bench/real/report.py on small fixture data written here: each target's verdict follows the
-data (it flips when the data does); a missing clip, run or number (NaN) makes a target "not
-measured", never "met"; sizes, goals and the variants' settings are rendered from the data and
-the generator's constants; "Why it fails" puts every missed frame in the category its
-measurement fits and explains every run that misses on a notable share of frames.
+"""bench/real/report.py on small fixture data written here: the new scoring (a frame is kept when
+the centroid is within ¼√area and the area within [0.5, 2]× the truth's), a frame missing from a
+run counts as a miss and the report says so, NaN never passes, frames out of view are not scored,
+each target's verdict follows the data, and a missing run reads "not measured".
 
-    test_real_report.py REAL_REPORT_PY WORK_DIR
+    test_real_report.py BENCH_REAL_DIR WORK_DIR
 """
 import csv
 import json
@@ -14,293 +13,200 @@ import os
 import shutil
 import sys
 
-from report_fixtures import load_generator
+bench_real, work = sys.argv[1:3]
+sys.path.insert(0, bench_real)
+sys.path.insert(0, os.path.join(bench_real, "..", "common"))
+import report  # noqa: E402
+import scoring  # noqa: E402
+import sections  # noqa: E402
+from results import Results  # noqa: E402
 
-report_py, work = sys.argv[1:3]
-rr = load_generator(report_py, 'real_report')
-
-N = 40                      # frames per clip
-W, H = 320, 240             # the fixture clips' size: the report must say this one
+N = 40
 CX, CY, SIDE = 100.0, 100.0, 40
 AREA = SIDE * SIDE
-DEFAULT = 'gap-tolerant-filling'
-METHODS = [dict(name='ray-casting', family='rays', from_paper=True),
-           dict(name='grid-filling', family='fill', from_paper=True),
-           dict(name=DEFAULT, family='fill', from_paper=False)]
-RUN_COLUMNS = ('clip,tracker,group,frame,status,measured,centroid_x,centroid_y,area,x,y,width,'
-               'height,has_pose,position_x,position_y,depth,push,acquired,us,moving_share,'
-               'scene_share,detail').split(',')
-MET, NOT_MET = '**met**', '**not met**'
+DEFAULT = "gap-tolerant-filling"
+D = f"projtrack {DEFAULT}"
+Q = "projtrack quarter 1 at 90,90"
+B = "projtrack start-box"
+NS = "projtrack no seed"
+RUN_COLUMNS = ("clip,tracker,group,frame,status,measured,centroid_x,centroid_y,area,x,y,width,"
+               "height,has_pose,position_x,position_y,depth,push,acquired,us,work,moving_share,"
+               "scene_share,detail").split(",")
+TRUTH_COLUMNS = ["frame", "centroid_x", "centroid_y", "area", "x", "y", "width", "height",
+                 "inner_x", "inner_y", "luma_mean"]
+MET, NOT_MET, MISSING = "**met**", "**not met**", "not measured"
+# entry: (clip, variant, motion away from the object)
+ENTRIES = {"cup": ("cup", "", 0.1), "cup-edge": ("cup", "edge", 0.1),
+           "balle1": ("balle1", "", 0.1), "cube": ("cube", "", 0.6)}
 
 
 def write_csv(path, columns, rows):
-    with open(path, 'w', newline='') as f:
-        out = csv.DictWriter(f, columns)
-        out.writeheader()
-        out.writerows(rows)
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, columns)
+        w.writeheader()
+        w.writerows(rows)
 
 
-def truth_rows():
+def truth_rows(out_of_view=()):
     return [dict(frame=i, centroid_x=CX, centroid_y=CY, area=AREA, x=CX - SIDE / 2,
                  y=CY - SIDE / 2, width=SIDE, height=SIDE, inner_x=int(CX), inner_y=int(CY),
-                 luma_mean=100) for i in range(N)]
+                 luma_mean=100) if i not in out_of_view else
+            dict(frame=i, centroid_x="", centroid_y="", area=0, x="", y="", width="", height="",
+                 inner_x="", inner_y="", luma_mean=100) for i in range(N)]
 
 
-def row(clip, tracker, group, i, us=1000.0, **over):
+def row(entry, tracker, group, i, us=1000.0, **over):
     """A frame on which the tracker reports the truth exactly."""
-    r = dict(clip=clip, tracker=tracker, group=group, frame=i, status='ok', measured=1,
+    r = dict(clip=entry, tracker=tracker, group=group, frame=i, status="ok", measured=1,
              centroid_x=CX, centroid_y=CY, area=AREA, x=int(CX - SIDE / 2), y=int(CY - SIDE / 2),
              width=SIDE, height=SIDE, has_pose=1, position_x=0, position_y=0, depth=1, push=0,
-             acquired=int(i == 0), us=us, moving_share=0.5, scene_share=0.5, detail='')
+             acquired=int(i == 0), us=us, work=10, moving_share=0.5, scene_share=0.5, detail="")
     r.update(over)
     return r
 
 
-def base_runs(clips=('cup', 'box')):
+def base_runs():
     runs = []
-    for clip in clips:
-        for m in METHODS:
-            runs += [row(clip, f'projtrack {m["name"]}', 'projtrack seeded', i) for i in range(N)]
-        runs += [row(clip, 'projtrack seeded at 90,90', 'projtrack seeded elsewhere', i)
-                 for i in range(N)]
-        runs += [row(clip, 'projtrack no seed', 'projtrack no seed', i) for i in range(N)]
-        runs += [row(clip, 'cvtracker MOSSE', 'box tracker', i, us=3000.0) for i in range(N)]
-    runs += [row('vtest', 'projtrack no seed', 'projtrack no seed', i) for i in range(N)]
+    for e in ENTRIES:
+        for name, group in ((D, "projtrack seeded"), (Q, "projtrack quarter"),
+                            (B, "projtrack box"), (NS, "projtrack no seed")):
+            runs += [row(e, name, group, i) for i in range(N)]
+        runs += [row(e, "cvtracker MOSSE", "box tracker", i, us=3000.0) for i in range(N)]
+    runs += [row("vtest", NS, "projtrack no seed", i) for i in range(N)]
     return runs
 
 
-def base_speed(clips=('cup', 'box')):
-    return [dict(clip=c, resolution='1920x1080', what=w, median_us=us, frames=N)
-            for c in clips for w, us in [('frame copy', 100), ('projtrack', 500),
-                                         ('harness alone (identity)', 20)]]
-
-
-def base_meta(clips=('cup', 'box')):
-    props = {f'projtrack {m["name"]}': f'method={m["name"]} inner-point-x=100 inner-point-y=100'
-             for m in METHODS}
-    props['projtrack seeded at 90,90'] = 'inner-point-x=90 inner-point-y=90'
-    props['projtrack no seed'] = 'acquisition=auto'
-    meta = dict(measured='2001-02-03 04:05 UTC', cpu='cpu', cores=2, opencv='4', gstreamer='G',
-                default_method=DEFAULT, methods=METHODS,
-                camshift=dict(histogram='hue-saturation', hue_bins=30, saturation_bins=32,
-                              saturation_min=30, value_min=10),
-                variants=dict(dark=dict(luma=0.4, chroma=0.7)), changed_levels=17,
-                clips={c: dict(frames=N, width=W, height=H, fps=25, truth=True, variant='',
-                               path='', properties=dict(props)) for c in clips})
-    meta['clips']['vtest'] = dict(frames=N, width=W, height=H, fps=10, truth=False, variant='',
-                                  path='', properties={'projtrack no seed': 'acquisition=auto'})
-    return meta
-
-
-def render(name, runs=None, speed=None, meta=None, truth=('cup', 'box'), readme=False):
-    """Writes the fixture, runs the report; returns (Report, document text)."""
+def render(name, runs=None, speed=None, out_of_view=()):
+    """Writes the fixture, runs the report; returns (Results, document text, summary rows)."""
     d = os.path.join(work, name)
-    data, truth_dir, doc = (os.path.join(d, p) for p in ('data', 'truth', 'doc'))
-    for p in (data, truth_dir, doc):
-        os.makedirs(p)
-    write_csv(os.path.join(data, 'runs.csv'), RUN_COLUMNS, base_runs() if runs is None else runs)
-    write_csv(os.path.join(data, 'speed.csv'), ['clip', 'resolution', 'what', 'median_us',
-                                                'frames'],
-              base_speed() if speed is None else speed)
-    with open(os.path.join(data, 'meta.json'), 'w') as f:
-        json.dump(base_meta() if meta is None else meta, f)
-    for clip in truth:
-        write_csv(os.path.join(truth_dir, clip + '.csv'), list(truth_rows()[0]), truth_rows())
-    for clip, v in (base_meta() if meta is None else meta)['clips'].items():
-        if v.get('variant'):  # a variant's truth is the harness's, beside its data
-            os.makedirs(os.path.join(data, 'truth'), exist_ok=True)
-            write_csv(os.path.join(data, 'truth', clip + '.csv'), list(truth_rows()[0]),
-                      truth_rows())
-    report = rr.Report(data, truth_dir, doc)
-    path = os.path.join(doc, 'real_footage.md')
-    report.write(path)
-    return report, open(path).read()
+    data, doc = os.path.join(d, "data"), os.path.join(d, "doc")
+    os.makedirs(os.path.join(data, "truth"))
+    os.makedirs(doc)
+    write_csv(os.path.join(data, "runs.csv"), RUN_COLUMNS, base_runs() if runs is None else runs)
+    write_csv(os.path.join(data, "speed.csv"), ["clip", "resolution", "what", "median_us",
+                                                "frames"],
+              speed if speed is not None else
+              [dict(clip=c, resolution="1920x1080", what=w, median_us=us, frames=N)
+               for c in ("cup", "balle1", "cube") for w, us in (("frame copy", 100),
+                                                               ("projtrack", 500))])
+    plan, seeds, clips = [], [], []
+    for e, (clip, variant, motion) in list(ENTRIES.items()) + [("vtest", ("vtest", "", 0.8))]:
+        plan.append(dict(entry=e, clip=clip, variant=variant))
+        if e != "vtest":
+            write_csv(os.path.join(data, "truth", e + ".csv"), TRUTH_COLUMNS,
+                      truth_rows(out_of_view))
+            seeds += [dict(entry=e, kind="deepest", x=100, y=100, w=0, h=0),
+                      dict(entry=e, kind="quarter", x=90, y=90, w=0, h=0),
+                      dict(entry=e, kind="box", x=80, y=80, w=40, h=40)]
+        if not variant:
+            clips.append(dict(clip=clip, start=0, frames=N, edge_side="left",
+                              outside_motion=motion))
+    write_csv(os.path.join(data, "plan.csv"), ["entry", "clip", "variant"], plan)
+    write_csv(os.path.join(data, "seeds.csv"), ["entry", "kind", "x", "y", "w", "h"], seeds)
+    write_csv(os.path.join(data, "clips.csv"), ["clip", "start", "frames", "edge_side",
+                                                "outside_motion"], clips)
+    meta = dict(measured="2001-02-03 04:05 UTC", cpu="cpu", cores=2, opencv="4", gstreamer="G",
+                default_method=DEFAULT, variants={"dark": {"luma": 0.5, "chroma": 0.8}},
+                clips={e: dict(frames=N, width=640, height=480, variant=ENTRIES[e][1],
+                               properties={D: "inner-point-x=100 inner-point-y=100"})
+                       for e in ENTRIES})
+    meta["clips"]["vtest"] = dict(frames=N, width=768, height=576, variant="", properties={})
+    with open(os.path.join(data, "meta.json"), "w") as f:
+        json.dump(meta, f)
+    res = Results(data)
+    path = os.path.join(doc, "real_footage.md")
+    report.Document(res, doc, path).write(path)
+    return res, open(path).read(), {r[0]: r[3] for r in sections.target_summary(res).rows}
 
 
-def verdicts(report):
-    return [v for _, _, _, v, _ in report.verdicts]
-
-
-def edit(runs, clip, tracker, frames, **over):
-    """The runs with some frames of one run changed."""
-    return [dict(r, **over) if (r['clip'], r['tracker']) == (clip, tracker) and r['frame'] in
+def edit(runs, entry, tracker, frames, **over):
+    return [dict(r, **over) if (r["clip"], r["tracker"]) == (entry, tracker) and r["frame"] in
             frames else r for r in runs]
 
 
+def drop(runs, entry, tracker, frames):
+    return [r for r in runs if not ((r["clip"], r["tracker"]) == (entry, tracker) and
+                                    r["frame"] in frames)]
+
+
 shutil.rmtree(work, ignore_errors=True)
-D = f'projtrack {DEFAULT}'
+KEPT = "clicked at the deepest point: kept (worst run)"
+THROWN = "clicked at the deepest point (thrown ball): kept (worst run)"
+AREA_T = "clicked at the deepest point: area within ±25 % (worst run)"
+NO_SEED = "no seed, clips where one object moves: kept (worst run)"
+MOSSE = "speed: MOSSE ÷ projtrack at 640×480 (worst clip)"
 
-# The baseline: every target met, rendered from the data without a NaN.
-base, text = render('base')
-assert verdicts(base) == [MET] * 8, verdicts(base)
-assert 'nan' not in text.lower()
-# Sizes from the data (never a typed 640×480), goals from the generator's constants.
-assert f'{N} frames, {W}×{H}.' in text and '640×480' not in text
-assert f'speed: MOSSE ÷ projtrack at {W}×{H} (worst clip)' in text
-assert 'projtrack ÷ frame copy at 1920×1080' in text
-assert f'| ≥ {100 * rr.GOAL_SEEDED_WITHIN:.0f} % |' in text
-assert f'| ≤ {rr.GOAL_COPIES:g}× |' in text
-# CamShift's histogram and the no-seed properties as projtrack-real recorded them.
-assert 'hue-saturation histogram (30 hue × 32 saturation bins)' in text
-assert 'with no seed (`acquisition=auto`)' in text
-assert 'changed by more than 17 grey levels' in text and ' 20 grey' not in text
+res, text, v = render("base")
+assert set(v.values()) == {MET}, v
+assert "nan" not in text.lower() and "## Runs cut short" in text
+assert "None: every run has a row for every frame" in text
 
-# Each target flips with its data.
-few = set(range(N - 3, N))  # 3 of 40 frames: 92.5 % kept
-flips = {
-    0: edit(base_runs(), 'box', D, few, centroid_x=CX + 30),
-    1: edit(base_runs(), 'cup', D, set(range(N)), centroid_x=CX + 6),
-    2: edit(base_runs(), 'cup', D, set(range(6)), area=AREA * 0.6),
-    3: edit(base_runs(), 'cup', D, {5}, area=AREA * 2.5),
-    4: edit(base_runs(), 'box', 'projtrack no seed', set(range(5)), status='searching',
-            measured=0),
-    5: edit(base_runs(), 'vtest', 'projtrack no seed', {7}, moving_share=0.001,
-            scene_share=0.01),
-    6: edit(base_runs(), 'box', 'cvtracker MOSSE', set(range(N)), us=1500.0),
-}
-for k, runs in flips.items():
-    got = verdicts(render(f'flip-{k}', runs=runs)[0])
-    assert got[k] == NOT_MET, (k, got)
-    assert got[:k] + got[k + 1:] == [MET] * 7 or k in (2, 3), (k, got)
-slow = [dict(r, median_us=1500) if (r['clip'], r['what']) == ('box', 'projtrack') else r
-        for r in base_speed()]
-assert verdicts(render('flip-7', speed=slow)[0])[7] == NOT_MET
+# A frame missing from a run counts as a miss, and the report says so: 3 of 40 rows dropped.
+res, text, v = render("missing-rows", runs=drop(base_runs(), "cup", D, {37, 38, 39}))
+m = res.score_of("cup", D)
+assert m["missing"] == 3 and m["kept"] == 37 / 40 and m["kept_old"] == 37 / 40, m
+assert v[KEPT] == NOT_MET, v
+assert "- cup, projtrack gap-tolerant-filling: 3 of 40 frames missing, counted as misses." in text
+# A whole run missing: not measured, never met.
+res, text, v = render("missing-run", runs=[r for r in base_runs()
+                                           if (r["clip"], r["tracker"]) != ("cup-edge", B)])
+assert v["started from the true box: kept (worst run)"] == MISSING, v
+assert "- cup-edge, projtrack start-box: not measured (no rows), counted as a miss." in text
 
-# A goal is the constant the verdict uses: change it and the text and the verdict follow.
-rr.GOAL_SEEDED_WITHIN = 0.95
-report, text = render('goal', runs=flips[0])
-assert verdicts(report)[0] == NOT_MET and '| ≥ 95 % |' in text, verdicts(report)
-rr.GOAL_SEEDED_WITHIN = 0.9
-assert verdicts(render('goal-lower', runs=flips[0])[0])[0] == MET
-rr.GOAL_SEEDED_WITHIN = 0.97
-
-# Missing data never passes.
-# A clip's MOSSE run missing: min() over [3, NaN] would read 3, "met".
-no_mosse = [r for r in base_runs() if (r['clip'], r['tracker']) != ('box', 'cvtracker MOSSE')]
-report, text = render('no-mosse', runs=no_mosse)
-assert verdicts(report)[6] == rr.MISSING, verdicts(report)
-assert 'nan' not in text.lower()
-# A NaN time.
-nan_time = edit(base_runs(), 'cup', 'cvtracker MOSSE', set(range(N)), us=float('nan'))
-assert verdicts(render('nan-mosse', runs=nan_time)[0])[6] == rr.MISSING
-# A clip's frame copy (or its projtrack time) missing: max() over [5, NaN] would read 5.
-for what in ('frame copy', 'projtrack'):
-    speed = [r for r in base_speed() if (r['clip'], r['what']) != ('box', what)]
-    report, text = render(f'no-{what.replace(" ", "-")}', speed=speed)
-    assert verdicts(report)[7] == rr.MISSING, (what, verdicts(report))
-    assert 'nan' not in text.lower(), what
-    assert f'| box | {rr.MISSING if what == "frame copy" else "100"} |' in text
-nan_speed = [dict(r, median_us='nan') if r['what'] == 'frame copy' and r['clip'] == 'cup' else r
-             for r in base_speed()]
-report, text = render('nan-copy', speed=nan_speed)
-assert verdicts(report)[7] == rr.MISSING and 'nan' not in text.lower()
-# A held clip missing from the run (bench/real/truth labels it): the seeded and no-seed targets, and
-# the speed ones over the held clips, are not measured.
-only_cup = [r for r in base_runs() if r['clip'] != 'box']
-meta = base_meta()
-del meta['clips']['box']
-report, text = render('no-box', runs=only_cup, meta=meta,
-                      speed=[r for r in base_speed() if r['clip'] == 'cup'])
-got = verdicts(report)
-assert got[:5] == [rr.MISSING] * 5 and got[6:] == [rr.MISSING] * 2, got
-assert got[5] == MET, got  # the static-region target rests on vtest alone
-assert 'this run holds no data for box' in text and 'nan' not in text.lower()
-# The default method's run missing on one clip; the no-seed run missing on one clip.
-report = render('no-default', runs=[r for r in base_runs()
-                                    if (r['clip'], r['tracker']) != ('cup', D)])[0]
-assert verdicts(report)[:4] == [rr.MISSING] * 4, verdicts(report)
-report = render('no-auto', runs=[r for r in base_runs() if (r['clip'], r['tracker']) !=
-                                 ('box', 'projtrack no seed')])[0]
-assert verdicts(report)[4] == rr.MISSING, verdicts(report)
-# No clip without a held object, or its no-seed run missing: the static target is not measured.
-report = render('no-vtest-run', runs=[r for r in base_runs() if r['clip'] != 'vtest'])[0]
-assert verdicts(report)[5] == rr.MISSING, verdicts(report)
-meta = base_meta()
-del meta['clips']['vtest']
-report = render('no-vtest', runs=[r for r in base_runs() if r['clip'] != 'vtest'], meta=meta)[0]
-assert verdicts(report)[5] == rr.MISSING, verdicts(report)
-# The README's summary says "not measured" too, and counts it.
-summary = report.summary()
-assert '(1 not measured)' in summary and 'met' in summary, summary
-assert rr.worst([0.9, float('nan')]) != rr.worst([0.9, float('nan')])  # NaN, never 0.9
-assert rr.verdict([math.nan], lambda v: True, words=rr.TARGET) == rr.MISSING
-
-# Why it fails: every missed frame in the category its measurement fits.
+# NaN never passes: a NaN centroid or area is a miss under both measures; a NaN time makes the
+# speed verdict not measured.
 t = truth_rows()[0]
-cases = {'searching': dict(status='searching', measured=0),
-         'lost': dict(status='lost', measured=0),
-         'elsewhere': dict(centroid_x=CX + 60),
-         'leak': dict(area=AREA * 2.5),
-         'larger': dict(area=AREA * 1.5),
-         'part': dict(area=AREA * 0.6),
-         'piece': dict(area=AREA * 0.2),
-         'off': dict(centroid_x=CX + 15)}
-for key, over in cases.items():
-    assert rr.miss_category(dict(row('cup', D, 'g', 0), **over), t) == key, key
-assert rr.miss_category(row('cup', D, 'g', 0), t) is None
-# A run with notable misses is explained from its data: counts, frames, measured ratios.
-runs = edit(base_runs(), 'cup', 'projtrack seeded at 90,90', set(range(10, 20)),
-            area=AREA * 1.5, x=int(CX - SIDE / 2), width=SIDE + 30)
-runs = edit(runs, 'cup', 'projtrack seeded at 90,90', set(range(30, 33)), status='searching',
-            measured=0, detail='waiting for motion')
-runs = edit(runs, 'box', 'projtrack no seed', {0}, status='searching', measured=0)
-report, text = render('why', runs=runs)
-why = text.split('## Why it fails', 1)[1]
-assert '| cup | projtrack seeded at 90,90 | 13 of 40 (32 %) | 3 |  |  |  | 10 |' in why, why
-assert '### cup: projtrack seeded at 90,90' in why
-assert 'Run with `inner-point-x=90 inner-point-y=90`: it misses on 13 of 40 frames' in why
-assert '- 10 frames, the area is 1.25–2× the truth' in why
-assert 'frames 10–19; median area 1.50× the truth\'s' in why
-assert 'the reported box reaches past the object\'s box most to the right (median 30 px)' in why
-assert '- 3 frames, the element was searching' in why and '"waiting for motion" (3)' in why
-# Under the notable share: in the table, not explained; the default method always is.
-assert f'| box | projtrack no seed | 1 of 40 ({rr.fmt_share(1 / 40)}) | 1 |' in why, why
-assert '### box: projtrack no seed' not in why
-assert f'### box: {D}' in why and 'it keeps the object on every frame' in why
-# An area under the truth's over a box that spans the object reads as undercounted, not as a
-# piece: the reported box's cover of the true one is measured.
-runs = edit(base_runs(), 'cup', 'projtrack ray-casting', set(range(N)), area=AREA * 0.3)
-spans = render('spans', runs=runs)[1].split('### cup: projtrack ray-casting', 1)[1]
-assert 'covers a median 100 % of the object\'s box: the estimate spans the object' in spans
-runs = edit(base_runs(), 'cup', 'projtrack ray-casting', set(range(N)), area=AREA * 0.3,
-            width=SIDE // 4, height=SIDE // 2)
-piece = render('piece', runs=runs)[1].split('### cup: projtrack ray-casting', 1)[1]
-assert 'covers a median 12 % of the object\'s box.' in piece, piece
-# Contact sheets need frames: none here, and the document says so instead of a picture.
-assert 'No contact sheet' in why
-if rr.cv2 is not None:
-    import numpy as np
-    images = {i: np.zeros((H, W, 3), np.uint8) for i in range(N)}
-    rows = report.runs[('cup', 'projtrack seeded at 90,90')]
-    sheet = os.path.join(work, 'why', 'sheet.jpg')
-    assert rr.data_sheet(images, rows, [10, 30], report.truth['cup'], {}, sheet)
-    assert rr.cv2.imread(sheet).shape == (240, 4 * 320, 3)
-    assert not rr.data_sheet(images, rows, [10, N + 5], report.truth['cup'], {}, sheet)
+t = {k: float(x) for k, x in t.items()}
+for over in (dict(centroid_x=math.nan), dict(area=math.nan)):
+    r = dict(row("cup", D, "g", 0), **over)
+    assert not scoring.kept(r, t), over
+assert not scoring.near(dict(row("cup", D, "g", 0), centroid_y=math.nan), t)
+res, text, v = render("nan-time", runs=edit(base_runs(), "cup", "cvtracker MOSSE", set(range(N)),
+                                            us=math.nan))
+assert v[MOSSE] == MISSING, v
 
-# The README's lines on the ray methods and the other seeds: from the data, missing included.
-summary = report.summary()
-assert ("The paper's ray methods (ray-casting), seeded alike, keep the object on cup 100 %, "
-        "box 100 % of the frames") in summary, summary
-assert (f'the default method keeps it on cup {rr.span_pct([37 / 40])} (area within ±25 %: '
-        f'{rr.span_pct([27 / 40])}); box 100 % (area within ±25 %: 100 %)') in summary, summary
-meta = base_meta()
-meta.pop('methods')
-summary = render('no-methods', meta=meta)[0].summary()
-assert "The paper's ray methods: not measured" in summary, summary
-report = render('no-ray-run', runs=[r for r in base_runs() if (r['clip'], r['tracker']) !=
-                                    ('box', 'projtrack ray-casting')])[0]
-assert 'keep the object on cup 100 %, box not measured of the frames' in report.summary(), \
-    report.summary()
+# The area condition flips a kept frame: the centroid exact, the area 2.5× the truth's.
+r = dict(row("cup", D, "g", 0), area=AREA * 2.5)
+assert scoring.near(r, t) and not scoring.kept(r, t)
+assert scoring.kept(dict(r, area=AREA * 1.9), t) and not scoring.kept(dict(r, area=AREA * 0.4), t)
+res, text, v = render("area", runs=edit(base_runs(), "cup", D, set(range(5)), area=AREA * 2.5))
+m = res.score_of("cup", D)
+assert m["kept_old"] == 1 and m["kept"] == 35 / 40, m
+assert v[KEPT] == NOT_MET and v[AREA_T] == NOT_MET, v
+assert "87.5 %" in text or "88 % / 100 %" in text, text
 
-# The variants' settings come from meta.json, not from text in the generator.
-dark = dict(row('cup-dark', D, 'projtrack seeded', 0))
-meta = base_meta()
-meta['clips']['cup-dark'] = dict(frames=1, width=W, height=H, fps=25, truth=True,
-                                 variant='dark', path='', properties={})
-report, text = render('variants', runs=base_runs() + [dark], meta=meta)
-assert 'dark: luma at 40 % of its range, chroma at 70 %' in text, text
-meta['variants'] = {}
-report, text = render('variants-unrecorded', runs=base_runs() + [dark], meta=meta)
-assert 'dark: settings not recorded' in text
-assert 'nan' not in text.lower()
-print('real-footage report verdicts: ok')
+# Frames out of view are not scored; what a run reports on them is counted apart.
+res, text, v = render("out-of-view", out_of_view={0, 1, 2, 3},
+                      runs=edit(base_runs(), "cup", D, {0, 1, 2, 3}, centroid_x=CX + 90))
+m = res.score_of("cup", D)
+assert m["in_view"] == 36 and m["kept"] == 1 and m["out_reported"] == 4, m
+assert v[KEPT] == MET, v
+assert "| 4 of 4 |" in text
+
+# The thrown ball's goal is lower: 34 of 40 (85 %) meets it there, not on the cup.
+off = set(range(6))
+res, text, v = render("thrown", runs=edit(base_runs(), "balle1", D, off, centroid_x=CX + 30))
+assert v[THROWN] == MET and v[KEPT] == MET, v
+res, text, v = render("held", runs=edit(base_runs(), "cup", D, off, centroid_x=CX + 30))
+assert v[KEPT] == NOT_MET, v
+
+# The no-seed target covers the clips where one object moves: not the cube.
+res, text, v = render("no-seed", runs=edit(base_runs(), "cube", NS, set(range(N)), measured=0,
+                                           status="searching"))
+assert v[NO_SEED] == MET, v
+res, text, v = render("no-seed-cup", runs=edit(base_runs(), "cup-edge", NS, set(range(8)),
+                                               measured=0, status="searching"))
+assert v[NO_SEED] == NOT_MET, v
+
+# vtest: a static region reported flips its verdict; the speed ratio flips with MOSSE's time.
+res, text, v = render("static", runs=edit(base_runs(), "vtest", NS, {7}, moving_share=0.001,
+                                          scene_share=0.01))
+assert v["vtest, no seed: frames reporting a static region"] == NOT_MET, v
+res, text, v = render("slow", runs=edit(base_runs(), "cube", "cvtracker MOSSE", set(range(N)),
+                                        us=1500.0))
+assert v[MOSSE] == NOT_MET, v
+
+# The README's block: every target counted, from the same rows.
+block = sections.summary(res)
+assert "the element meets" in block and "cube (" in block, block
+print("real-footage report: ok")
