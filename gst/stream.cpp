@@ -160,8 +160,8 @@ void warn_of_seed(GstProjtrack* self, const std::string& note) {
                         ("the track in hand goes on; see the message's detail"));
 }
 
-// After the frame: the status logged and warned, the tracker's inner point published, the track
-// id moved on an acquisition, and the message posted (after every lock is released).
+// After the frame: the status logged and warned, the tracker's inner point published, and the
+// message posted (after every lock is released), with `note` (a seed refused) in its detail.
 void report(GstProjtrack* self, GstBuffer* buffer, const Settings& s, const TrackResult& r,
             const FrameMapping& mapping, std::string note,
             std::chrono::steady_clock::time_point start) {
