@@ -25,12 +25,16 @@ MEASURED = ('ok', 'reached-border', 'covers-frame')
 def projtrack_roi(buffer):
     """(x, y, width, height, params) of the box projtrack attached to `buffer`, or None.
 
-    projtrack attaches one ROI meta per buffer, with id 0 and type 'object'."""
-    meta = GstVideo.buffer_get_video_region_of_interest_meta_id(buffer, 0)
-    if meta is None or GLib.quark_to_string(meta.roi_type) != 'object':
+    projtrack attaches a GstProjtrackMeta (a GstCustomMeta: its structure holds the features, kept
+    true to the frame through videoconvert and videoscale) and a ROI meta of type 'object' whose id
+    is the meta's track-id (GStreamer 1.22's videoscale drops the ROI meta's parameters, never
+    GstProjtrackMeta's)."""
+    custom = buffer.get_custom_meta('GstProjtrackMeta')
+    if custom is None:
         return None
-    params = meta.get_param('projtrack')  # a Gst.Structure, or None from another element
-    if params is None:
+    params = custom.get_structure()
+    meta = GstVideo.buffer_get_video_region_of_interest_meta_id(buffer, params.get_value('track-id'))
+    if meta is None or GLib.quark_to_string(meta.roi_type) != 'object':
         return None
     return meta.x, meta.y, meta.w, meta.h, params
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <gst/gst.h>
+#include <gst/video/video.h>
 
 #include <atomic>
 #include <optional>
@@ -27,8 +28,15 @@ struct Stream {
   // Why buffers were not read since the caps: each reason is warned once.
   std::set<std::string> layout_warnings;
   int width = 0, height = 0;
-  int black_level = 0;  // of edge-detector=input: 16 in limited-range YUV
-  guint64 frames = 0;   // for buffers without timestamps
+  // The format and colours the tracker learned on: a change makes it learn them anew.
+  GstVideoFormat format = GST_VIDEO_FORMAT_UNKNOWN;
+  GstVideoColorRange range = GST_VIDEO_COLOR_RANGE_UNKNOWN;
+  GstVideoColorMatrix matrix = GST_VIDEO_COLOR_MATRIX_UNKNOWN;
+  int track_id = 0;          // of the current track (next_track_id()); 0 before the first
+  std::string element_name;  // for the metas
+  std::vector<std::vector<Point2i>> outline;  // this frame's silhouette, frame coordinates
+  int black_level = 0;                        // of edge-detector=input: 16 in limited-range YUV
+  guint64 frames = 0;                         // for buffers without timestamps
   TrackStatus last_status = TrackStatus::NoInnerPoint;
   // The status of the last message posted (updates=on-change).
   std::optional<TrackStatus> last_posted;
@@ -41,10 +49,13 @@ struct _GstProjtrack {
   GstVideoFilter parent;
   projtrack::gst::Settings* settings;   // GST_OBJECT_LOCK
   projtrack::gst::SeedCommand pending;  // GST_OBJECT_LOCK
-  int frame_width, frame_height;        // GST_OBJECT_LOCK: the negotiated size, for clicks
-  int tracked_x, tracked_y;             // GST_OBJECT_LOCK: the tracker's inner point after the
-                                        // last frame (current-inner-point-x/y); -1 = none
-  projtrack::gst::Stream* stream;       // streaming thread
+  // GST_OBJECT_LOCK: why a seed given was refused (a malformed box), for the streaming thread to
+  // warn of (it posts, never under the lock) and to say in the next message's detail.
+  std::string* seed_note;
+  int frame_width, frame_height;   // GST_OBJECT_LOCK: the negotiated size, for clicks
+  int tracked_x, tracked_y;        // GST_OBJECT_LOCK: the tracker's inner point after the
+                                   // last frame (current-inner-point-x/y); -1 = none
+  projtrack::gst::Stream* stream;  // streaming thread
   // Set when the streaming thread must drop what it is doing (PAUSED → READY, a flush): the
   // tracker polls it at its checkpoints; cleared when streaming starts again.
   std::atomic<bool>* interrupt;

@@ -1,6 +1,6 @@
-// The element's enum types, as gst-inspect-1.0 shows them: method (from the table of methods),
-// edge-detector, acquisition, object-model and updates. Each is registered on its first use; a
-// function-local static makes that thread-safe.
+// The element's enum and flags types, as gst-inspect-1.0 shows them: method (from the table of
+// methods), edge-detector, acquisition, object-model, updates and draw-flags. Each is registered on
+// its first use; a function-local static makes that thread-safe.
 #include "gstprojtrack.h"
 #include "projtrack/edge_detection.hpp"
 #include "projtrack/method.hpp"
@@ -70,5 +70,19 @@ GType gst_projtrack_updates_get_type(void) {
       {static_cast<gint>(Updates::None), "No messages (the ROI meta is still attached)", "none"},
       {0, nullptr, nullptr}};
   static const GType type = g_enum_register_static("GstProjtrackUpdates", values);
+  return type;
+}
+
+GType gst_projtrack_draw_flags_get_type(void) {
+  using namespace projtrack::gst;
+  static const GFlagsValue values[] = {
+      {kDrawStatus, "The text: status and why, x, y and depth, the method", "status"},
+      {kDrawOutline, "The object's outline (its silhouette)", "outline"},
+      {kDrawBox, "The object's bounding box", "box"},
+      {kDrawCentroid, "The centroid's cross", "centroid"},
+      {kDrawInnerPoint, "The inner point for the next frame", "inner-point"},
+      {kDrawGrid, "What the method did: grid lines, filled pixels, blocks or rays", "grid"},
+      {0, nullptr, nullptr}};
+  static const GType type = g_flags_register_static("GstProjtrackDrawFlags", values);
   return type;
 }

@@ -29,6 +29,12 @@ void on_sink_event(GstProjtrack* self, GstEvent* event) {
     GST_DEBUG_OBJECT(self, "flushing: a frame in progress is interrupted");
     self->interrupt->store(true);
   } else if (GST_EVENT_TYPE(event) == GST_EVENT_FLUSH_STOP) {
+    // A flush is a seek (or a jump): the frames that follow show another moment, where the old
+    // track's inner point means nothing. The track restarts from the seed given, or searches.
+    GST_DEBUG_OBJECT(self, "flushed: the track restarts from the seed given, if any");
+    GST_OBJECT_LOCK(self);
+    reseed_locked(self);
+    GST_OBJECT_UNLOCK(self);
     self->interrupt->store(false);
   }
 }

@@ -15,6 +15,7 @@ bool has_luma_plane(GstVideoFormat format) {
     case GST_VIDEO_FORMAT_NV21:
     case GST_VIDEO_FORMAT_Y42B:
     case GST_VIDEO_FORMAT_Y444:
+    case GST_VIDEO_FORMAT_A420:  // I420 and an alpha plane
       return true;
     default:
       return false;
@@ -22,7 +23,8 @@ bool has_luma_plane(GstVideoFormat format) {
 }
 
 bool is_packed_yuv(GstVideoFormat format) {
-  return format == GST_VIDEO_FORMAT_YUY2 || format == GST_VIDEO_FORMAT_UYVY;
+  return format == GST_VIDEO_FORMAT_YUY2 || format == GST_VIDEO_FORMAT_UYVY ||
+         format == GST_VIDEO_FORMAT_AYUV;
 }
 
 namespace {
@@ -82,8 +84,8 @@ ColorView frame_color(const GstVideoFrame* frame, std::vector<std::uint8_t>& buf
     return c;
   }
   if (is_packed_yuv(GST_VIDEO_FRAME_FORMAT(frame))) {
-    // The library reads luma rows of adjacent bytes: YUY2's and UYVY's every second byte is
-    // gathered once (a row copy's cost); their chroma is read in place.
+    // The library reads luma rows of adjacent bytes: YUY2's and UYVY's every second byte (AYUV's
+    // every fourth) is gathered once (a row copy's cost); their chroma is read in place.
     buffer.resize(static_cast<std::size_t>(width) * height);
     gather_component(static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, 0)),
                      GST_VIDEO_FRAME_COMP_PSTRIDE(frame, 0), GST_VIDEO_FRAME_COMP_STRIDE(frame, 0),

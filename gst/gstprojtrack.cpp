@@ -15,9 +15,15 @@
  * edge image from the inner point.
  *
  * While tracking, every buffer carries a #GstVideoRegionOfInterestMeta of type `object` (the
- * bounding box) with a `projtrack` parameter structure holding the features, and the element
- * posts an element message named `projtrack` (see docs/element.md for every field). Without an
- * object the message's `status` says why (e.g. `no-inner-point`) and no meta is attached.
+ * bounding box; its id is the track's `track-id`, new on every acquisition) with a `projtrack`
+ * parameter structure holding the features, and a `GstProjtrackMeta` (a #GstCustomMeta, read
+ * with gstprojtrackmeta.h from C, buffer.get_custom_meta() from Python) holding them too, the
+ * element's name and the silhouette's outline: its transform scales them through videoconvert and
+ * videoscale, where GStreamer 1.22 drops the ROI meta's parameters. The element posts an element
+ * message named `projtrack` (see docs/element.md for every field). Without an object the
+ * message's `status` says why (e.g. `no-inner-point`) and no meta is attached. With
+ * `alpha-mask=true` and a format with alpha (AYUV, A420, BGRA...), the silhouette is written
+ * into the alpha channel, so that compositor shows the object alone.
  *
  * Without an inner point (`acquisition=auto`, the default) it finds the moving object itself, and
  * finds it again after losing it: an estimate whose area leaks or collapses is refused and
@@ -31,8 +37,11 @@
  * `autovideosink`) starts tracking at the clicked pixel; a right click stops it.
  * `current-inner-point-x`/`-y` say where the tracker is. `updates` chooses which frames post a
  * message (every frame, on a change, none); conflicting settings are posted as an element warning
- * and `status=invalid-parameters` on the first frame. With `draw=true` the element draws the
- * status and why, x, y and depth, the object's outline and what the estimator did.
+ * and `status=invalid-parameters` on the first frame, a malformed box as an element warning and
+ * the next message's `detail`. With `draw=true` the element draws the status and why, x, y and
+ * depth, the object's outline and what the estimator did (`draw-flags` chooses which). New caps
+ * of another size rescale the track, another format keeps it; a flush restarts it from the point
+ * or box given; GAP buffers pass untouched. Numeric settings may be driven by a #GstController.
  *
  * No frame can stall the pipeline: each has a budget of work (`max-work`, in passes over its
  * pixels, counted in work and never in time) that edge detection and every estimate spend from; a
@@ -40,9 +49,9 @@
  * to READY or NULL, or a flush, stops a frame in progress (`status=interrupted`), so
  * gst_element_set_state() never waits for a long frame.
  *
- * YUV formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444) are read in place, luma and chroma;
- * YUY2 and UYVY have their chroma read in place and their luma gathered once; packed RGB is
- * converted internally. The element works in place; without `draw` it maps frames
+ * YUV formats (GRAY8, I420, YV12, NV12, NV21, Y42B, Y444, A420) are read in place, luma and
+ * chroma; YUY2, UYVY and AYUV have their chroma read in place and their luma gathered once; packed
+ * RGB is converted internally. The element works in place; without `draw` it maps frames
  * read-only and never copies them.
  *
  * ## Example launch lines
@@ -60,6 +69,11 @@
  * gst-launch-1.0 filesrc location=clip.mp4 ! decodebin ! videoconvert ! projtrack
  * method=pixel-filling draw=true inner-point-x=320 inner-point-y=240 ! videoconvert ! autovideosink
  * ]| Tracks from a given inner point in a file, with pixel-filling.
+ * |[
+ * gst-launch-1.0 compositor name=c ! videoconvert ! autovideosink videotestsrc pattern=smpte !
+ * video/x-raw,width=320,height=240 ! c.sink_0 videotestsrc pattern=ball ! video/x-raw,format=BGRA,
+ * width=320,height=240 ! projtrack inner-point-x=160 inner-point-y=120 alpha-mask=true ! c.sink_1
+ * ]| The tracked ball alone (its silhouette as alpha) over colour bars.
  */
 
 // The element's class: its type, its pads and metadata, its signals, and the virtual methods, each
@@ -68,6 +82,7 @@
 
 #include "element.hpp"
 #include "events.hpp"
+#include "meta.hpp"
 #include "properties.hpp"
 #include "seeds.hpp"
 #include "stream.hpp"
@@ -83,7 +98,7 @@ static guint signals[N_SIGNALS];
 
 #define VIDEO_FORMATS                                                                             \
   "{ I420, YV12, NV12, NV21, Y42B, Y444, YUY2, UYVY, GRAY8, BGRx, RGBx, xRGB, xBGR, BGRA, RGBA, " \
-  "ARGB, ABGR, BGR, RGB }"
+  "ARGB, ABGR, BGR, RGB, AYUV, A420 }"
 
 static GstStaticPadTemplate sink_template = GST_STATIC_PAD_TEMPLATE(
     "sink", GST_PAD_SINK, GST_PAD_ALWAYS, GST_STATIC_CAPS(GST_VIDEO_CAPS_MAKE(VIDEO_FORMATS)));
@@ -109,11 +124,19 @@ static gboolean gst_projtrack_src_event(GstBaseTransform* trans, GstEvent* event
   return GST_BASE_TRANSFORM_CLASS(gst_projtrack_parent_class)->src_event(trans, event);
 }
 
+// Properties bound to a GstController take their values at this buffer's stream time.
+static void gst_projtrack_before_transform(GstBaseTransform* trans, GstBuffer* buffer) {
+  const GstClockTime stream_time =
+      gst_segment_to_stream_time(&trans->segment, GST_FORMAT_TIME, GST_BUFFER_PTS(buffer));
+  if (GST_CLOCK_TIME_IS_VALID(stream_time)) gst_object_sync_values(GST_OBJECT(trans), stream_time);
+}
+
 static void gst_projtrack_finalize(GObject* object) {
   auto* self = GST_PROJTRACK(object);
   delete self->stream;
   delete self->settings;
   delete self->interrupt;
+  delete self->seed_note;
   G_OBJECT_CLASS(gst_projtrack_parent_class)->finalize(object);
 }
 
@@ -124,8 +147,11 @@ static void gst_projtrack_init(GstProjtrack* self) {
   self->tracked_x = self->tracked_y = -1;
   self->stream = nullptr;
   self->interrupt = new std::atomic<bool>(false);
+  self->seed_note = new std::string;
   // Metadata needs a writable buffer: never pass buffers through untouched.
   gst_base_transform_set_passthrough(GST_BASE_TRANSFORM(self), FALSE);
+  // GAP buffers go on as GAP buffers (transform_ip leaves them alone).
+  gst_base_transform_set_gap_aware(GST_BASE_TRANSFORM(self), TRUE);
 }
 
 static void gst_projtrack_class_init(GstProjtrackClass* klass) {
@@ -157,11 +183,11 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
 
   gst_element_class_set_static_metadata(
       element_class, "Object projection feature tracker", "Filter/Analyzer/Video",
-      "Tracks one object (found by its motion, a click, an inner point or a box) and reports its "
-      "centroid, area, bounding box and a 3D pointer (x, y, depth, push clicks) on every frame: "
-      "a GstVideoRegionOfInterestMeta of type \"object\" with a \"projtrack\" parameter "
-      "structure on each buffer, and a \"projtrack\" element message on the bus",
+      "Tracks one object from its edges and an inner point: centroid, area, box, outline, 3D "
+      "pointer",
       PROJTRACK_CONTACT);
+  gst_element_class_add_static_metadata(element_class, GST_ELEMENT_METADATA_DOC_URI,
+                                        PROJTRACK_DOC_URI);
   gst_element_class_add_static_pad_template(element_class, &sink_template);
   gst_element_class_add_static_pad_template(element_class, &src_template);
 
@@ -170,6 +196,7 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   trans_class->stop = GST_DEBUG_FUNCPTR(projtrack::gst::stop);
   trans_class->sink_event = GST_DEBUG_FUNCPTR(gst_projtrack_sink_event);
   trans_class->src_event = GST_DEBUG_FUNCPTR(gst_projtrack_src_event);
+  trans_class->before_transform = GST_DEBUG_FUNCPTR(gst_projtrack_before_transform);
   filter_class->set_info = GST_DEBUG_FUNCPTR(projtrack::gst::set_info);
   trans_class->transform_ip = GST_DEBUG_FUNCPTR(projtrack::gst::transform_ip);
 
@@ -178,4 +205,6 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_OBJECT_MODEL, static_cast<GstPluginAPIFlags>(0));
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_EDGE_DETECTOR, static_cast<GstPluginAPIFlags>(0));
   gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_UPDATES, static_cast<GstPluginAPIFlags>(0));
+  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_DRAW_FLAGS, static_cast<GstPluginAPIFlags>(0));
+  projtrack::gst::projtrack_meta_info();  // GstProjtrackMeta, before any buffer carries one
 }

@@ -24,6 +24,9 @@ GType gst_projtrack_object_model_get_type(void);
 #define GST_TYPE_PROJTRACK_UPDATES (gst_projtrack_updates_get_type())
 GType gst_projtrack_updates_get_type(void);
 
+#define GST_TYPE_PROJTRACK_DRAW_FLAGS (gst_projtrack_draw_flags_get_type())
+GType gst_projtrack_draw_flags_get_type(void);
+
 GST_ELEMENT_REGISTER_DECLARE(projtrack);
 
 G_END_DECLS

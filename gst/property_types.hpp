@@ -33,6 +33,12 @@ struct Enum {
     GType type;
   };
 };
+struct Flags {
+  struct Range {  // `(GST_TYPE_...)`: the flags' GType
+    explicit Range(GType t) : type(t) {}
+    GType type;
+  };
+};
 // A box <x, y, width, height> as a GstValueArray of ints; its range is each coordinate's.
 struct Box {
   struct Range {
@@ -62,6 +68,10 @@ GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, En
                        GParamFlags flags) {
   return g_param_spec_enum(name, nick, blurb, r.type, static_cast<gint>(def), flags);
 }
+inline GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Flags::Range r,
+                              guint def, GParamFlags flags) {
+  return g_param_spec_flags(name, nick, blurb, r.type, def, flags);
+}
 // A GstValueArray's default is always the empty array: the row's default must be the empty box.
 inline GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Box::Range r,
                               const Rect& def, GParamFlags flags) {
@@ -82,6 +92,8 @@ inline void from_value(Double, const GValue* v, double& member) { member = g_val
 inline void to_value(Double, GValue* v, double member) { g_value_set_double(v, member); }
 inline void from_value(Boolean, const GValue* v, bool& member) { member = g_value_get_boolean(v); }
 inline void to_value(Boolean, GValue* v, bool member) { g_value_set_boolean(v, member); }
+inline void from_value(Flags, const GValue* v, unsigned& member) { member = g_value_get_flags(v); }
+inline void to_value(Flags, GValue* v, unsigned member) { g_value_set_flags(v, member); }
 template <class E>
 void from_value(Enum, const GValue* v, E& member) {
   member = static_cast<E>(g_value_get_enum(v));

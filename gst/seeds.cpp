@@ -2,6 +2,12 @@
 // frame, are written here only.
 #include "seeds.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+
 #include "element.hpp"
 #include "properties.hpp"
 
@@ -9,16 +15,42 @@ namespace projtrack::gst {
 
 namespace {
 
-// start-box: x, y, width, height, or nothing (an empty array, or width or height under 1).
-Rect box_of(const GValue* array) {
-  if (gst_value_array_get_size(array) != 4) return {};
-  int v[4];
-  for (guint i = 0; i < 4; ++i) {
+std::string box_text(const Rect& b) {
+  return "<" + std::to_string(b.x) + ", " + std::to_string(b.y) + ", " + std::to_string(b.width) +
+         ", " + std::to_string(b.height) + ">";
+}
+
+// Why `box` (from `what`) cannot be tracked, or nothing. Sizes are checked one by one: no
+// arithmetic on a user's numbers can overflow.
+std::string malformed(const char* what, const Rect& box) {
+  if (box.width > 0 && box.height > 0) return {};
+  return std::string(what) + " " + box_text(box) +
+         " refused: its width and height must be at least 1 (<> stops the track, as the reset "
+         "signal does)";
+}
+
+// start-box: x, y, width, height; or nothing (an empty array). Anything else is refused with why.
+std::optional<Rect> box_of(const GValue* array, std::string& why) {
+  const guint n = gst_value_array_get_size(array);
+  if (n == 0) return Rect{};
+  int v[4] = {};
+  for (guint i = 0; i < n && i < 4; ++i) {
     const GValue* item = gst_value_array_get_value(array, i);
-    if (!G_VALUE_HOLDS_INT(item)) return {};
+    if (!G_VALUE_HOLDS_INT(item)) {
+      why = "start-box refused: its values must be integers, <x, y, width, height>";
+      return std::nullopt;
+    }
     v[i] = g_value_get_int(item);
   }
-  return {v[0], v[1], v[2], v[3]};
+  if (n != 4) {
+    why = "start-box refused: it has " + std::to_string(n) +
+          " numbers, not the 4 of <x, y, width, height>";
+    return std::nullopt;
+  }
+  const Rect box{v[0], v[1], v[2], v[3]};
+  why = malformed("start-box", box);
+  if (!why.empty()) return std::nullopt;
+  return box;
 }
 
 void set_box_value(GValue* array, const Rect& box) {
@@ -29,6 +61,12 @@ void set_box_value(GValue* array, const Rect& box) {
     g_value_set_int(&item, v);
     gst_value_array_append_and_take_value(array, &item);
   }
+}
+
+// A malformed seed is refused: the track in hand goes on, and the streaming thread says why.
+void refuse_seed_locked(GstProjtrack* self, std::string why) {
+  GST_WARNING_OBJECT(self, "%s", why.c_str());
+  *self->seed_note = std::move(why);
 }
 
 }  // namespace
@@ -82,7 +120,13 @@ void get_inner_point_y(GstProjtrack* self, GValue* value) {
   g_value_set_int(value, self->settings->seed_y);
 }
 
-void set_start_box(GstProjtrack* self, const GValue* value) { set_box_locked(self, box_of(value)); }
+void set_start_box(GstProjtrack* self, const GValue* value) {
+  std::string why;
+  if (const std::optional<Rect> box = box_of(value, why))
+    set_box_locked(self, *box);
+  else
+    refuse_seed_locked(self, std::move(why));
+}
 
 void get_start_box(GstProjtrack* self, GValue* value) {
   set_box_value(value, self->settings->seed_box);
@@ -105,11 +149,57 @@ void track_point(GstProjtrack* self, gint x, gint y) {
 }
 
 void track_box(GstProjtrack* self, gint x, gint y, gint width, gint height) {
+  const Rect box{x, y, width, height};
+  std::string why = malformed("track-box", box);
+  const bool refused = !why.empty();
   GST_OBJECT_LOCK(self);
-  set_box_locked(self, {x, y, width, height});  // an empty box stops the track
+  if (refused)
+    refuse_seed_locked(self, std::move(why));
+  else
+    set_box_locked(self, box);
   GST_OBJECT_UNLOCK(self);
-  GST_INFO_OBJECT(self, "track-box %d, %d, %dx%d", x, y, width, height);
-  notify_inner_point(self);
+  GST_INFO_OBJECT(self, "track-box %d, %d, %dx%d%s", x, y, width, height,
+                  refused ? ": refused" : "");
+  if (!refused) notify_inner_point(self);
+}
+
+std::string apply_seed(Tracker& tracker, SeedCommand command, const Settings& s, int width,
+                       int height) {
+  if (command == SeedCommand::Seed) {
+    tracker.seed({s.seed_x, s.seed_y});
+  } else if (command == SeedCommand::SeedBox) {
+    // Clipped to the picture (in 64 bits: no corner overflows); wholly outside it, not applied.
+    const Rect clipped = clip_to_frame(s.seed_box, width, height);
+    if (clipped.empty())
+      return "start-box " + box_text(s.seed_box) + " lies outside the " + std::to_string(width) +
+             "x" + std::to_string(height) + " picture: not applied";
+    tracker.seed_box(clipped);
+  } else if (command == SeedCommand::Reset) {
+    tracker.reset();
+  }
+  return {};
+}
+
+void rescale_seeds_locked(GstProjtrack* self, int width, int height, int new_width,
+                          int new_height) {
+  Settings& s = *self->settings;
+  const double sx = static_cast<double>(new_width) / width;
+  const double sy = static_cast<double>(new_height) / height;
+  const auto scale = [](int v, double f) {
+    return static_cast<int>(std::clamp(std::floor((v + 0.5) * f), 0.0, double(G_MAXINT)));
+  };
+  if (s.seed_x >= 0 && s.seed_y >= 0) {
+    s.seed_x = scale(s.seed_x, sx);
+    s.seed_y = scale(s.seed_y, sy);
+  }
+  // The part of the box in the old picture (the rest was never applied), scaled.
+  if (const Rect b = clip_to_frame(s.seed_box, width, height); !b.empty()) {
+    const int x0 = static_cast<int>(std::floor(b.x * sx)),
+              y0 = static_cast<int>(std::floor(b.y * sy));
+    const int x1 = static_cast<int>(std::ceil((static_cast<double>(b.x) + b.width) * sx));
+    const int y1 = static_cast<int>(std::ceil((static_cast<double>(b.y) + b.height) * sy));
+    s.seed_box = {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
+  }
 }
 
 void reset(GstProjtrack* self) {

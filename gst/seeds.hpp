@@ -1,14 +1,18 @@
 // Where a track starts: the inner point or box a user gives (the inner-point-x/-y and start-box
-// properties, the track-point, track-box and reset signals, a click), turned into the command the
-// streaming thread applies before its next frame; and where the tracker is now
-// (current-inner-point-x/-y). Functions named *_locked, and the property handlers, are called
-// with the object lock held.
+// properties, the track-point, track-box and reset signals, a click), checked (a malformed box is
+// refused, and why is said), turned into the command the streaming thread applies before its next
+// frame; and where the tracker is now (current-inner-point-x/-y). Functions named *_locked, and the
+// property handlers, are called with the object lock held.
 #pragma once
 
 #include <gst/gst.h>
 
+#include <string>
+
 #include "gstprojtrack.h"
 #include "projtrack/geometry.hpp"
+#include "projtrack/tracker.hpp"
+#include "settings.hpp"
 
 namespace projtrack::gst {
 
@@ -18,6 +22,8 @@ namespace projtrack::gst {
 void set_inner_point_locked(GstProjtrack* self, int x, int y, bool awaiting_coordinate = false);
 // The track starts in `box` on the next frame; an empty box stops it.
 void set_box_locked(GstProjtrack* self, const Rect& box);
+// The frames changed size: the point and box given follow, so that a restart finds the object.
+void rescale_seeds_locked(GstProjtrack* self, int width, int height, int new_width, int new_height);
 // A restart (caps change, stop/start) begins again from the last inner point or box given.
 void reseed_locked(GstProjtrack* self);
 // Tells the app that the seed changed: inner-point-x/-y and start-box. Without the lock.
@@ -38,5 +44,11 @@ void get_current_inner_point_y(GstProjtrack* self, GValue* value);
 void track_point(GstProjtrack* self, gint x, gint y);
 void track_box(GstProjtrack* self, gint x, gint y, gint width, gint height);
 void reset(GstProjtrack* self);
+
+// The streaming thread applies `command` (the seed given last, in `s`) before a width × height
+// frame. A box is clipped to the picture; one wholly outside it is not applied, and the returned
+// text says so (empty when all went well).
+std::string apply_seed(Tracker& tracker, SeedCommand command, const Settings& s, int width,
+                       int height);
 
 }  // namespace projtrack::gst

@@ -19,6 +19,17 @@ enum class Updates {
   None,        // never
 };
 
+// What the overlay draws (draw-flags): a bit each, all by default.
+enum DrawFlag : unsigned {
+  kDrawStatus = 1u << 0,      // the text panel: the status and why, x, y, depth, the method
+  kDrawOutline = 1u << 1,     // the silhouette's outline
+  kDrawBox = 1u << 2,         // the bounding box
+  kDrawCentroid = 1u << 3,    // the centroid's cross
+  kDrawInnerPoint = 1u << 4,  // the inner point for the next frame
+  kDrawGrid = 1u << 5,        // what the method did: grid lines, filled pixels, blocks, rays
+  kDrawAll = (1u << 6) - 1,
+};
+
 // Everything a user can set. A default-constructed Settings holds every property's default.
 struct Settings {
   Method method = kDefaultMethod;
@@ -26,6 +37,8 @@ struct Settings {
   EdgeParams edges;
   TrackerParams tracker;
   bool draw = false;
+  unsigned draw_flags = kDrawAll;
+  bool alpha_mask = false;  // the silhouette into the alpha channel, when the format has one
   bool post_messages = true;
   Updates updates = Updates::EveryFrame;
   int seed_x = -1, seed_y = -1;  // the last inner point given (property, signal, click); -1 = none

@@ -1,6 +1,7 @@
 // Each buffer: the settings copied under the lock, the frame mapped after its layout is checked,
-// the tracker run, the meta attached, the status logged and warned, and the message posted after
-// the lock is released.
+// the seed given applied, the tracker run, the alpha and the overlay written, the metas attached,
+// the status logged and warned, and the message posted after the lock is released; and the
+// stream's state across caps.
 #include "stream.hpp"
 
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "alpha_mask.hpp"
 #include "element.hpp"
 #include "frame_color.hpp"
 #include "frame_mapping.hpp"
@@ -21,16 +23,12 @@ namespace projtrack::gst {
 
 namespace {
 
-// Runs edges + estimator on one mapped frame, and draws when asked.
+// Runs edges + estimator on one mapped frame (after the seed given, if any: why it could not be
+// applied goes into `note`), and draws and writes the alpha when asked.
 TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
-                    SeedCommand command) {
+                    SeedCommand command, std::string& note) {
   Stream& st = *self->stream;
-  if (command == SeedCommand::Seed)
-    st.tracker.seed({s.seed_x, s.seed_y});
-  else if (command == SeedCommand::SeedBox)
-    st.tracker.seed_box(s.seed_box);
-  else if (command == SeedCommand::Reset)
-    st.tracker.reset();
+  note = apply_seed(st.tracker, command, s, st.width, st.height);
   EdgeParams edge_params = s.edges;
   edge_params.input_black_level = st.black_level;
   const ColorView color = frame_color(frame, st.converted);
@@ -43,8 +41,12 @@ TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
   ++st.frames;
   // The tracker computes the edges itself: while tracking, only around the object.
   TrackResult r = st.tracker.track(color, edge_params, t, s.method, s.params, s.tracker, trace);
+  const SilhouetteMask silhouette =
+      has_features(r.status) ? st.tracker.silhouette() : SilhouetteMask{};
+  st.outline = outline_polygons(silhouette);
+  if (s.alpha_mask && has_alpha(GST_VIDEO_FRAME_FORMAT(frame))) write_alpha(frame, silhouette);
   if (s.draw) {
-    draw_overlay(frame, s.method, r, st.trace);
+    draw_overlay(frame, s.method, r, st.trace, s.draw_flags);
     if (st.trace.rays_not_recorded)
       GST_LOG_OBJECT(self, "overlay: %zu rays not recorded", st.trace.rays_not_recorded);
   }
@@ -91,31 +93,50 @@ void report_status(GstProjtrack* self, Stream& st, const TrackResult& r) {
 
 }  // namespace
 
+// Per-stream state is made with the first caps. New caps of another size rescale the track (and
+// the seeds given) to it; another format or colour range, at the same size, makes the tracker
+// learn the object's colours anew: both keep the track.
 gboolean set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info, GstCaps*,
                   GstVideoInfo*) {
   auto* self = GST_PROJTRACK(filter);
-  if (!self->stream) {
+  const bool first = !self->stream;
+  if (first) {
     self->stream = new Stream;
     self->stream->tracker.set_stop_flag(self->interrupt);
   }
   Stream& st = *self->stream;
   const int width = GST_VIDEO_INFO_WIDTH(in_info), height = GST_VIDEO_INFO_HEIGHT(in_info);
+  const GstVideoColorimetry& colours = in_info->colorimetry;
   st.black_level =
-      GST_VIDEO_INFO_IS_YUV(in_info) && in_info->colorimetry.range == GST_VIDEO_COLOR_RANGE_16_235
-          ? 16
-          : 0;
+      GST_VIDEO_INFO_IS_YUV(in_info) && colours.range == GST_VIDEO_COLOR_RANGE_16_235 ? 16 : 0;
   st.layout_warnings.clear();
+  const bool resized = !first && (width != st.width || height != st.height);
+  const bool recoloured = !first && (GST_VIDEO_INFO_FORMAT(in_info) != st.format ||
+                                     colours.range != st.range || colours.matrix != st.matrix);
   GST_OBJECT_LOCK(self);
   self->frame_width = width;
   self->frame_height = height;
-  if (width != st.width || height != st.height) reseed_locked(self);
+  st.element_name = GST_OBJECT_NAME(self);  // for the metas: the name is fixed while streaming
+  if (first)
+    reseed_locked(self);
+  else if (resized)
+    rescale_seeds_locked(self, st.width, st.height, width, height);
   GST_OBJECT_UNLOCK(self);
-  if (width != st.width || height != st.height) {
-    GST_DEBUG_OBJECT(self, "new frame size %dx%d: the track restarts", width, height);
-    st.tracker.reset();
-    st.width = width;
-    st.height = height;
+  if (resized) {
+    GST_DEBUG_OBJECT(self, "new frame size %dx%d -> %dx%d: the track is rescaled", st.width,
+                     st.height, width, height);
+    st.tracker.rescale(st.width, st.height, width, height);
+    notify_inner_point(self);
+  } else if (recoloured) {
+    GST_DEBUG_OBJECT(self, "new format %s: the object's colours are learned anew",
+                     gst_video_format_to_string(GST_VIDEO_INFO_FORMAT(in_info)));
+    st.tracker.relearn();
   }
+  st.width = width;
+  st.height = height;
+  st.format = GST_VIDEO_INFO_FORMAT(in_info);
+  st.range = colours.range;
+  st.matrix = colours.matrix;
   return TRUE;
 }
 
@@ -130,37 +151,20 @@ gboolean stop(GstBaseTransform* trans) {
   return TRUE;
 }
 
-// In place, as GstVideoFilter would, but the frame is mapped for writing only when the overlay
-// draws: a read-only map never copies a buffer that another branch (a tee) shares.
-GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
-  auto* self = GST_PROJTRACK(trans);
-  auto* filter = GST_VIDEO_FILTER(trans);
-  if (!filter->negotiated || !self->stream) {
-    GST_ELEMENT_ERROR(self, CORE, NEGOTIATION, (nullptr), ("no format negotiated"));
-    return GST_FLOW_NOT_NEGOTIATED;
-  }
-  const auto start = std::chrono::steady_clock::now();
+namespace {
 
-  GST_OBJECT_LOCK(self);
-  const Settings s = *self->settings;
-  const SeedCommand command = std::exchange(self->pending, SeedCommand::None);
-  GST_OBJECT_UNLOCK(self);
+// Warns of `note` (a seed refused or not applied): an element warning, never under the lock.
+void warn_of_seed(GstProjtrack* self, const std::string& note) {
+  if (!note.empty())
+    GST_ELEMENT_WARNING(self, LIBRARY, SETTINGS, ("%s", note.c_str()),
+                        ("the track in hand goes on; see the message's detail"));
+}
 
-  GstVideoFrame frame;
-  const FrameMapping mapping = map_frame_checked(&frame, &filter->in_info, buffer,
-                                                 s.draw ? GST_MAP_READWRITE : GST_MAP_READ);
-  if (mapping.merged) GST_DEBUG_OBJECT(self, "a plane spanned memory blocks: merged them");
-  TrackResult r = mapping.ok() ? TrackResult{} : unread_frame(self, mapping, command);
-  try {
-    if (mapping.ok()) r = process(self, &frame, s, command);
-  } catch (const std::exception& e) {  // e.g. std::bad_alloc: never unwind into GStreamer's C
-    gst_video_frame_unmap(&frame);
-    GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Tracking failed: %s", e.what()), (nullptr));
-    return GST_FLOW_ERROR;
-  }
-  if (mapping.ok()) gst_video_frame_unmap(&frame);
-  if (has_features(r.status)) attach_meta(buffer, r, s.method);
-
+// After the frame: the status logged and warned, the tracker's inner point published, and the
+// message posted (after every lock is released), with `note` (a seed refused) in its detail.
+void report(GstProjtrack* self, GstBuffer* buffer, const Settings& s, const TrackResult& r,
+            const FrameMapping& mapping, std::string note,
+            std::chrono::steady_clock::time_point start) {
   Stream& st = *self->stream;
   report_status(self, st, r);
   if (r.push) GST_INFO_OBJECT(self, "gesture: push");
@@ -169,17 +173,72 @@ GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
   self->tracked_x = inner ? inner->x : -1;
   self->tracked_y = inner ? inner->y : -1;
   GST_OBJECT_UNLOCK(self);
+  if (!(s.post_messages && worth_posting(s.updates, r, st.last_posted))) return;
+  const auto ns =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start)
+          .count();
+  const FrameReport frame{r,         s.method,   st.element_name.c_str(), st.track_id, st.width,
+                          st.height, st.outline, std::move(note)};
+  GstMessage* msg = result_message(self, buffer, frame, static_cast<guint64>(ns));
+  if (!mapping.ok())
+    gst_structure_set(gst_message_writable_structure(msg), "reason", G_TYPE_STRING, mapping.reason,
+                      nullptr);
+  gst_element_post_message(GST_ELEMENT(self), msg);  // never under the object lock
+}
 
-  if (s.post_messages && worth_posting(s.updates, r, st.last_posted)) {
-    const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                        std::chrono::steady_clock::now() - start)
-                        .count();
-    GstMessage* msg = result_message(self, buffer, r, s.method, static_cast<guint64>(ns));
-    if (!mapping.ok())
-      gst_structure_set(gst_message_writable_structure(msg), "reason", G_TYPE_STRING,
-                        mapping.reason, nullptr);
-    gst_element_post_message(GST_ELEMENT(self), msg);  // never under the object lock
+}  // namespace
+
+// In place, as GstVideoFilter would, but the frame is mapped for writing only when the overlay
+// draws or the alpha is written: a read-only map never copies a buffer that another branch (a
+// tee) shares. A GAP buffer holds no picture: it passes on untouched, and the track waits.
+GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
+  auto* self = GST_PROJTRACK(trans);
+  auto* filter = GST_VIDEO_FILTER(trans);
+  if (!filter->negotiated || !self->stream) {
+    GST_ELEMENT_ERROR(self, CORE, NEGOTIATION, (nullptr), ("no format negotiated"));
+    return GST_FLOW_NOT_NEGOTIATED;
   }
+  if (GST_BUFFER_FLAG_IS_SET(buffer, GST_BUFFER_FLAG_GAP)) {
+    GST_LOG_OBJECT(self, "a GAP buffer: passed on untouched");
+    return GST_FLOW_OK;
+  }
+  const auto start = std::chrono::steady_clock::now();
+
+  GST_OBJECT_LOCK(self);
+  const Settings s = *self->settings;
+  const SeedCommand command = std::exchange(self->pending, SeedCommand::None);
+  std::string note = std::exchange(*self->seed_note, std::string());
+  GST_OBJECT_UNLOCK(self);
+  warn_of_seed(self, note);
+
+  const bool writes =
+      s.draw || (s.alpha_mask && has_alpha(GST_VIDEO_INFO_FORMAT(&filter->in_info)));
+  GstVideoFrame frame;
+  const FrameMapping mapping = map_frame_checked(&frame, &filter->in_info, buffer,
+                                                 writes ? GST_MAP_READWRITE : GST_MAP_READ);
+  if (mapping.merged) GST_DEBUG_OBJECT(self, "a plane spanned memory blocks: merged them");
+  TrackResult r = mapping.ok() ? TrackResult{} : unread_frame(self, mapping, command);
+  std::string not_applied;
+  try {
+    if (mapping.ok()) r = process(self, &frame, s, command, not_applied);
+  } catch (const std::exception& e) {  // e.g. std::bad_alloc: never unwind into GStreamer's C
+    gst_video_frame_unmap(&frame);
+    GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Tracking failed: %s", e.what()), (nullptr));
+    return GST_FLOW_ERROR;
+  }
+  if (mapping.ok()) gst_video_frame_unmap(&frame);
+  warn_of_seed(self, not_applied);
+  if (!not_applied.empty()) note += (note.empty() ? "" : "; ") + not_applied;
+
+  Stream& st = *self->stream;
+  if (r.acquired) st.track_id = next_track_id();
+  if (!mapping.ok()) st.outline.clear();
+  if (has_features(r.status)) {
+    const FrameReport frame_report{
+        r, s.method, st.element_name.c_str(), st.track_id, st.width, st.height, st.outline, {}};
+    attach_meta(buffer, frame_report);
+  }
+  report(self, buffer, s, r, mapping, std::move(note), start);
   return GST_FLOW_OK;
 }
 

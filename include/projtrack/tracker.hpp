@@ -26,6 +26,7 @@
 #include "method.hpp"
 #include "params.hpp"
 #include "pose.hpp"
+#include "silhouette_mask.hpp"
 #include "trace.hpp"
 #include "tracker_params.hpp"
 
@@ -78,6 +79,18 @@ class Tracker {
   // the object, 0 elsewhere. False, with the mask all 0, when the tracker holds none (the edges
   // model, no object, a dropped track) or the mask's shape is unusable (no data, stride < width).
   bool silhouette(std::uint8_t* mask, int width, int height, std::ptrdiff_t stride) const;
+  // The object's silhouette on the last frame whose estimate was accepted (the appearance model's;
+  // empty with the edges model, or without a track). A view into the tracker.
+  SilhouetteMask silhouette() const;
+  // The frames change size, from width × height to new_width × new_height (a new resolution):
+  // the inner point, the user's box, the last estimate and the pointer's reference area are
+  // scaled, and the appearance model finds the object again within its scaled box on the next
+  // frame, learning its colours anew there. The track goes on: no new acquisition, depth goes on.
+  void rescale(int width, int height, int new_width, int new_height);
+  // The frames' colours are read another way (another pixel format, same size): the appearance
+  // model learns the object's colours anew within its last box on the next frame (those learned
+  // on the old format would not find it); the track goes on, as after rescale().
+  void relearn();
 
   // One frame taken at `t` seconds, with edges computed here with `edge_params`: only around the
   // object while tracking. A frame with chroma gives the appearance model its colours; a gray

@@ -339,7 +339,7 @@ bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const Finde
     return true;
   // Nothing of its own colours fills the box: the user's box is the object's outline.
   load(frame, p, work_);
-  apart_from_border_ = false;
+  apart_from_border_ = true;  // its colours are learned against the border's (the box may be all)
   out.reset(wb & work_.rect());
   const double cx = wb.x + wb.width / 2.0 - 0.5, cy = wb.y + wb.height / 2.0 - 0.5;
   const double rx = wb.width / 2.0, ry = wb.height / 2.0;

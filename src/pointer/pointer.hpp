@@ -23,6 +23,9 @@ class Pointer {
   void cancel_gesture() { push_.reset(); }
   // Forgets the object's first area: the next start() sets depth 1 afresh.
   void forget() { area0_ = 0; }
+  // The frames changed size by `factor` in area: depth goes on from the first area in the new
+  // frame's pixels.
+  void rescale_area(double factor) { area0_ *= factor; }
 
   const Pose& pose() const { return pose_; }  // smoothed when TrackerParams::smoothing
   const Pose& raw() const { return raw_; }

@@ -60,9 +60,12 @@ PieceSum stopped_for_want_of_work(const WorkBudget& budget, int piece) {
   out.stopped = true;
   out.total.status =
       budget.interrupted() ? EstimateStatus::Interrupted : EstimateStatus::OverBudget;
-  out.total.detail = "the work budget ran out: " + std::to_string(budget.spent()) + " of " +
-                     std::to_string(budget.limit()) + " units spent, before piece " +
-                     std::to_string(piece + 1) + " of the silhouette";
+  out.total.detail =
+      budget.interrupted()
+          ? "stopped from outside before piece " + std::to_string(piece + 1) + " of the silhouette"
+          : "the work budget ran out: " + std::to_string(budget.spent()) + " of " +
+                std::to_string(budget.limit()) + " units spent, before piece " +
+                std::to_string(piece + 1) + " of the silhouette";
   return out;
 }
 

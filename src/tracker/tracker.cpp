@@ -24,6 +24,21 @@ void Tracker::seed_box(const Rect& box) { impl_->state.seed_box(box); }
 void Tracker::reset() { impl_->state.reset(); }
 const std::optional<Point2i>& Tracker::inner_point() const { return impl_->state.track().inner; }
 void Tracker::set_stop_flag(const std::atomic<bool>* stop) { impl_->stop = stop; }
+void Tracker::relearn() { impl_->state.relearn(); }
+
+void Tracker::rescale(int width, int height, int new_width, int new_height) {
+  if (width <= 0 || height <= 0 || new_width <= 0 || new_height <= 0) return;
+  impl_->state.rescale(static_cast<double>(new_width) / width,
+                       static_cast<double>(new_height) / height);
+}
+
+SilhouetteMask Tracker::silhouette() const {
+  const TrackerState& s = impl_->state;
+  if (s.model() != ObjectModelKind::Appearance || !s.object.tracking() || !s.track().last)
+    return {};
+  const Mask& m = s.object.silhouette();
+  return {m.view(), m.rect(), s.object.scale(), impl_->width, impl_->height};
+}
 
 TrackResult Tracker::track(const ColorView& frame, const EdgeParams& edge_params, double t,
                            Method m, const Params& params, const TrackerParams& tp, Trace* trace) {
@@ -81,6 +96,8 @@ TrackResult failed(TrackStatus status, std::string why) {
 
 TrackResult Tracker::Impl::track(const ColorView& frame, EdgeSource& edges, const FrameInput& in) {
   work.budget = WorkBudget(frame_work_limit(frame.luma.width, frame.luma.height, in.tp), stop);
+  width = frame.luma.width;
+  height = frame.luma.height;
   edges.set_budget(&work.budget);
   TrackResult r = check_and_track(frame, edges, in);
   r.inner_point = state.track().inner;
@@ -149,8 +166,10 @@ void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult
 void Tracker::Impl::stopped(const Features& f, const TrackerParams& tp, TrackResult& r) {
   std::string why = f.detail;
   if (f.status == EstimateStatus::Interrupted || work.budget.interrupted()) {
+    // Said here whatever the stage that stopped said: a stop is no budget running out.
     r.status = TrackStatus::Interrupted;
-    r.detail = why.empty() ? "stopped: the work was interrupted" : std::move(why);
+    r.detail = "stopped from outside (the pipeline is stopping or flushing) after " +
+               std::to_string(work.budget.spent()) + " work units: the track is kept as it was";
     report_last(state, r);
     return;
   }

@@ -44,6 +44,7 @@ struct Tracker::Impl {
   TrackerState state;
   FrameWork work;
   const std::atomic<bool>* stop = nullptr;
+  int width = 0, height = 0;  // the last frame's size (Tracker::silhouette())
 
   // One frame (tracker.cpp): its budget, its checks, then the object model's step.
   TrackResult track(const ColorView& frame, EdgeSource& edges, const FrameInput& in);

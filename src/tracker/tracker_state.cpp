@@ -1,5 +1,9 @@
 #include "tracker/tracker_state.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace projtrack {
 
 void TrackerState::seed(Point2i p) {
@@ -89,6 +93,61 @@ void TrackerState::refuse() {
 void TrackerState::forget_colours() {
   object.forget();
   pointer.forget();
+}
+
+namespace {
+
+int to_int(double v) {
+  return static_cast<int>(std::clamp(v, static_cast<double>(std::numeric_limits<int>::min()),
+                                     static_cast<double>(std::numeric_limits<int>::max())));
+}
+// A pixel (its centre at +0.5) and a rectangle of pixels at sx × sy their size.
+Point2i scaled(Point2i p, double sx, double sy) {
+  return {to_int(std::floor((p.x + 0.5) * sx)), to_int(std::floor((p.y + 0.5) * sy))};
+}
+Rect scaled(const Rect& r, double sx, double sy) {
+  const double x0 = std::floor(r.x * sx), y0 = std::floor(r.y * sy);
+  const double x1 = std::ceil((static_cast<double>(r.x) + r.width) * sx);
+  const double y1 = std::ceil((static_cast<double>(r.y) + r.height) * sy);
+  return {to_int(x0), to_int(y0), to_int(x1 - x0), to_int(y1 - y0)};
+}
+Point2d scaled(Point2d c, double sx, double sy) {  // pixel centres at integer coordinates
+  return {(c.x + 0.5) * sx - 0.5, (c.y + 0.5) * sy - 0.5};
+}
+
+}  // namespace
+
+void TrackerState::rescale(double sx, double sy) {
+  if (!(sx > 0 && sy > 0 && std::isfinite(sx) && std::isfinite(sy))) return;
+  Track& t = track_;
+  if (t.inner) t.inner = scaled(*t.inner, sx, sy);
+  if (t.seed_box) t.seed_box = scaled(*t.seed_box, sx, sy);
+  if (t.last) {
+    Features& f = *t.last;
+    f.centroid = scaled(f.centroid, sx, sy);
+    f.area *= sx * sy;
+    f.bbox = scaled(f.bbox, sx, sy);
+    f.reach = scaled(f.reach, sx, sy);
+    f.seed = scaled(f.seed, sx, sy);
+    f.inner_point = scaled(f.inner_point, sx, sy);
+  }
+  t.velocity = {t.velocity.x * sx, t.velocity.y * sy};
+  t.lost_area *= sx * sy;
+  t.lost_centroid = scaled(t.lost_centroid, sx, sy);
+  pointer.rescale_area(sx * sy);
+  edges_acquisition.reset();
+  relearn();
+}
+
+void TrackerState::relearn() {
+  // The start within a box takes the object's first silhouette there and learns its colours
+  // against the frame's border, as from a user's box; the last estimate, kept, makes it no new
+  // track (accept()).
+  if (track_.last && !track_.seed_box) track_.seed_box = track_.last->bbox;
+  object.forget();
+  motion.reset();
+  moved = {};
+  moved_before = {};
 }
 
 }  // namespace projtrack

@@ -232,6 +232,8 @@ TEST(Stop, SetStateNullDuringAHugeFrameInterruptsIt) {
   }
   ASSERT_EQ(ms.size(), 1u) << "the frame passed through with a message";
   EXPECT_EQ(ms[0].status, "interrupted") << ms[0].detail;
+  EXPECT_NE(ms[0].detail.find("stopped from outside"), std::string::npos) << ms[0].detail;
+  EXPECT_EQ(ms[0].detail.find("budget"), std::string::npos) << "no budget ran out";
   // One cast alone is a million rays of hundreds of steps each.
   EXPECT_LT(ms[0].work, 1000000000u);
   gst_object_unref(bus);
@@ -257,6 +259,7 @@ TEST_F(Budget, AFlushInterruptsAHugeFrameAndTrackingGoesOn) {
   auto m = messages();
   ASSERT_EQ(m.size(), 1u);
   EXPECT_EQ(m[0].status, "interrupted") << m[0].detail;
+  EXPECT_EQ(m[0].detail.find("budget"), std::string::npos) << m[0].detail;
   gst_harness_push_event(h_, gst_event_new_flush_stop(TRUE));
   GstSegment segment;
   gst_segment_init(&segment, GST_FORMAT_TIME);

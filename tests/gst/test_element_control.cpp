@@ -1,25 +1,26 @@
 // Starting, stopping and reading a track from an app, and how often the element speaks: the
 // track-point, track-box and reset action signals, start-box, current-inner-point-x/y, updates,
-// conflicting settings reported at once, YUY2/UYVY read like the planar formats, and what
-// gst-inspect-1.0 shows.
+// conflicting settings reported at once, YUY2/UYVY read like the planar formats, properties
+// driven by a GstController, and what gst-inspect-1.0 shows.
 #include <gst/check/gstharness.h>
+#include <gst/controller/gstdirectcontrolbinding.h>
+#include <gst/controller/gstinterpolationcontrolsource.h>
 #include <gst/gst.h>
 #include <gst/video/video.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <regex>
 #include <string>
 #include <vector>
 
+#include "harness.hpp"
 #include "projtrack/method.hpp"
 
 namespace {
 
-struct GstEnvironment : ::testing::Environment {
-  void SetUp() override { gst_init(nullptr, nullptr); }
-};
-const auto* const kGstEnvironment = ::testing::AddGlobalTestEnvironment(new GstEnvironment);
+const auto* const kGst = ::testing::AddGlobalTestEnvironment(new projtrack::test::GstInit);
 
 constexpr int kW = 160, kH = 120, kCx = 70, kCy = 64, kRadius = 30;
 
@@ -30,20 +31,9 @@ std::string caps(const char* format) {
 
 // A bright disc on a dark background, in `format` (videoconvert from GRAY8).
 GstBuffer* disc(const char* format = "GRAY8") {
-  GstBuffer* b = gst_buffer_new_allocate(nullptr, static_cast<gsize>(kW) * kH, nullptr);
-  GstMapInfo map;
-  gst_buffer_map(b, &map, GST_MAP_WRITE);
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x)
-      map.data[y * kW + x] = std::hypot(x - kCx, y - kCy) <= kRadius ? 220 : 40;
-  gst_buffer_unmap(b, &map);
+  GstBuffer* b = projtrack::test::gray_disc(kW, kH, kCx, kCy, kRadius);
   if (std::string(format) == "GRAY8") return b;
-  GstHarness* c = gst_harness_new("videoconvert");
-  gst_harness_set_src_caps_str(c, caps("GRAY8").c_str());
-  gst_harness_set_sink_caps_str(c, caps(format).c_str());
-  GstBuffer* out = gst_harness_push_and_pull(c, b);
-  gst_harness_teardown(c);
-  return out;
+  return projtrack::test::converted(b, caps("GRAY8"), caps(format));
 }
 
 struct Frame {
@@ -63,20 +53,12 @@ struct Frame {
   }
 };
 
-class Control : public ::testing::Test {
+class Control : public projtrack::test::ProjtrackHarness {
  protected:
   void SetUp() override {
-    h_ = gst_harness_new("projtrack");
-    ASSERT_NE(h_, nullptr) << "is GST_PLUGIN_PATH set to the build's gst folder?";
-    bus_ = gst_bus_new();
-    gst_element_set_bus(h_->element, bus_);
+    ProjtrackHarness::SetUp();
     gst_harness_set_src_caps_str(h_, caps("GRAY8").c_str());
     gst_util_set_object_arg(G_OBJECT(h_->element), "acquisition", "manual");
-  }
-  void TearDown() override {
-    gst_harness_teardown(h_);
-    gst_bus_set_flushing(bus_, TRUE);
-    gst_object_unref(bus_);
   }
   void push(Frame& f, GstBuffer* in = nullptr) {
     GST_BUFFER_PTS(in ? in : (in = disc())) = pts_;
@@ -89,10 +71,7 @@ class Control : public ::testing::Test {
       if (GST_MESSAGE_TYPE(m) == GST_MESSAGE_ELEMENT) {
         f.messages.push_back(gst_structure_copy(gst_message_get_structure(m)));
       } else if (GST_MESSAGE_TYPE(m) == GST_MESSAGE_WARNING) {
-        GError* e = nullptr;
-        gst_message_parse_warning(m, &e, nullptr);
-        f.warnings.push_back(e->message);
-        g_error_free(e);
+        f.warnings.push_back(projtrack::test::warning_text(m));
       }
       gst_message_unref(m);
     }
@@ -102,9 +81,6 @@ class Control : public ::testing::Test {
     g_object_get(h_->element, name, &v, nullptr);
     return v;
   }
-  GstHarness* h_ = nullptr;
-  GstBus* bus_ = nullptr;
-  GstClockTime pts_ = 0;
 };
 
 TEST_F(Control, TrackPointStartsInOneCallAndTheCurrentInnerPointFollowsTheObject) {
@@ -252,14 +228,74 @@ TEST_F(Control, PackedYuvIsTrackedAsThePlanarFormats) {
   }
 }
 
+// A GstController drives a controllable property frame by frame (the element syncs it to each
+// buffer's stream time): edge-threshold-low interpolated from 50 to 200 over a second, read back
+// after each frame, and in effect: above edge-threshold-high (150) the settings conflict.
+TEST_F(Control, AControllerDrivesAPropertyFrameByFrame) {
+  g_signal_emit_by_name(h_->element, "track-point", kCx, kCy);
+  GstControlSource* source = gst_interpolation_control_source_new();
+  g_object_set(source, "mode", GST_INTERPOLATION_MODE_LINEAR, nullptr);
+  gst_timed_value_control_source_set(GST_TIMED_VALUE_CONTROL_SOURCE(source), 0, 50.0);
+  gst_timed_value_control_source_set(GST_TIMED_VALUE_CONTROL_SOURCE(source), GST_SECOND, 200.0);
+  GstObject* element = GST_OBJECT(h_->element);
+  ASSERT_TRUE(gst_object_add_control_binding(
+      element, gst_direct_control_binding_new_absolute(element, "edge-threshold-low", source)));
+  const struct {
+    double low;
+    const char* status;
+  } expected[] = {{50, "ok"}, {100, "ok"}, {150, "ok"}, {200, "invalid-parameters"}};
+  for (const auto& e : expected) {  // frames at 0, 1/3, 2/3 and 1 s
+    Frame f;
+    pts_ = static_cast<GstClockTime>(std::llround(e.low - 50)) * GST_SECOND / 150;
+    push(f);
+    double low = 0;
+    g_object_get(h_->element, "edge-threshold-low", &low, nullptr);
+    EXPECT_NEAR(low, e.low, 1e-6);
+    EXPECT_EQ(f.status(), e.status) << "at " << e.low;
+  }
+  gst_object_unref(source);
+}
+
+// Every property flagged controllable takes a binding; the seeds, whose every setting restarts
+// the track, are not controllable.
+TEST_F(Control, ControllablePropertiesTakeABinding) {
+  guint n = 0;
+  GParamSpec** specs = g_object_class_list_properties(G_OBJECT_GET_CLASS(h_->element), &n);
+  GstObject* element = GST_OBJECT(h_->element);
+  int controllable = 0;
+  for (guint i = 0; i < n; ++i) {
+    if (!(specs[i]->flags & GST_PARAM_CONTROLLABLE)) continue;
+    ++controllable;
+    GstControlSource* source = gst_interpolation_control_source_new();
+    GstControlBinding* b = gst_direct_control_binding_new(element, specs[i]->name, source);
+    EXPECT_TRUE(gst_object_add_control_binding(element, b)) << specs[i]->name;
+    gst_object_remove_control_binding(element, b);
+    gst_object_unref(source);
+  }
+  g_free(specs);
+  EXPECT_GE(controllable, 10);
+  for (const char* seed : {"inner-point-x", "inner-point-y", "start-box"}) {
+    GParamSpec* p = g_object_class_find_property(G_OBJECT_GET_CLASS(h_->element), seed);
+    EXPECT_FALSE(p->flags & GST_PARAM_CONTROLLABLE) << seed;
+  }
+}
+
 TEST(Inspect, PackageOriginContactAndBlurbsInAUsersWordsThatNameTheirMethods) {
   GstElementFactory* factory = gst_element_factory_find("projtrack");
   ASSERT_NE(factory, nullptr);
   const std::string author = gst_element_factory_get_metadata(factory, "author");
   EXPECT_TRUE(std::regex_search(author, std::regex("<[^@ ]+@[^> ]+>"))) << author;
+  // One line, as gst-inspect-1.0 lists elements; the details are in the documentation.
   const std::string description = gst_element_factory_get_metadata(factory, "description");
-  EXPECT_NE(description.find("GstVideoRegionOfInterestMeta"), std::string::npos);
-  EXPECT_NE(description.find("element message"), std::string::npos);
+  EXPECT_LE(description.size(), 100u) << description;
+  EXPECT_EQ(description.find('\n'), std::string::npos);
+  EXPECT_NE(description.find("centroid"), std::string::npos) << description;
+  const char* doc = gst_element_factory_get_metadata(factory, GST_ELEMENT_METADATA_DOC_URI);
+  ASSERT_NE(doc, nullptr) << "no documentation URI";
+  EXPECT_TRUE(std::regex_search(doc, std::regex("^(file|https?)://.*element"))) << doc;
+  if (g_str_has_prefix(doc, "file://")) {  // a build from source: the tree's own page
+    EXPECT_TRUE(g_file_test(doc + strlen("file://"), G_FILE_TEST_EXISTS)) << doc;
+  }
   GstPlugin* plugin = gst_plugin_feature_get_plugin(GST_PLUGIN_FEATURE(factory));
   EXPECT_STRNE(gst_plugin_get_origin(plugin), "Unknown package origin");
   EXPECT_STRNE(gst_plugin_get_package(plugin), "");

@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "harness.hpp"
 #include "projtrack/method.hpp"
 
 namespace {
@@ -34,7 +35,7 @@ const auto* const kGstEnvironment = ::testing::AddGlobalTestEnvironment(new GstE
 
 constexpr const char* kFormats[] = {"GRAY8", "I420", "YV12", "NV12", "NV21", "Y42B", "YUY2",
                                     "UYVY",  "Y444", "BGRx", "RGBx", "xRGB", "xBGR", "BGRA",
-                                    "RGBA",  "ARGB", "ABGR", "BGR",  "RGB"};
+                                    "RGBA",  "ARGB", "ABGR", "BGR",  "RGB",  "AYUV", "A420"};
 
 const std::set<std::string> kStatuses = {
     "ok",          "reached-border", "covers-frame",        "lost",
@@ -84,20 +85,8 @@ std::string check_message(GstMessage* m) {
   return status ? status : "";
 }
 
-class Matrix : public ::testing::Test {
+class Matrix : public projtrack::test::ProjtrackHarness {
  protected:
-  void SetUp() override {
-    h_ = gst_harness_new("projtrack");
-    ASSERT_NE(h_, nullptr);
-    bus_ = gst_bus_new();
-    gst_element_set_bus(h_->element, bus_);
-  }
-  void TearDown() override {
-    gst_harness_teardown(h_);
-    // Queued messages hold the element: drop them, or element and bus keep each other alive.
-    gst_bus_set_flushing(bus_, TRUE);
-    gst_object_unref(bus_);
-  }
   // Pushes one buffer and returns the status of its message (checked).
   std::string push(GstBuffer* buf) {
     GST_BUFFER_PTS(buf) = pts_;
@@ -114,9 +103,6 @@ class Matrix : public ::testing::Test {
     gst_message_unref(m);
     return status;
   }
-  GstHarness* h_ = nullptr;
-  GstBus* bus_ = nullptr;
-  GstClockTime pts_ = 0;
 };
 
 TEST_F(Matrix, EveryFormatAtEverySize) {
@@ -243,6 +229,46 @@ TEST_F(Matrix, EveryNumericPropertyAtItsMinimumAndMaximum) {
   g_free(specs);
   std::cout << cases << " property extremes\n";
   EXPECT_GT(cases, 40);
+}
+
+// start-box and track-box at the ends of their ranges, malformed, outside and around the picture:
+// a defined status every time (sanitized builds: no overflow, no read outside the frame).
+TEST_F(Matrix, StartBoxAndTrackBoxAtTheirExtremes) {
+  gst_harness_set_src_caps_str(h_, caps_of("I420", 160, 120).c_str());
+  gst_util_set_object_arg(G_OBJECT(h_->element), "acquisition", "manual");
+  const char* boxes[] = {"<>",
+                         "<0, 0, 1, 1>",
+                         "<159, 119, 1, 1>",
+                         "<160, 120, 1, 1>",
+                         "<2147483647, 0, 2, 2>",
+                         "<0, 2147483647, 2, 2>",
+                         "<2147483647, 2147483647, 2147483647, 2147483647>",
+                         "<-2147483648, -2147483648, 2147483647, 2147483647>",
+                         "<-2147483648, 0, 1, 1>",
+                         "<0, 0, 2147483647, 2147483647>",
+                         "<-1000, -1000, 1100, 1080>",
+                         "<-1, -1, 2, 2>",
+                         "<1, 2, 3>",
+                         "<1, 2, 3, 4, 5>",
+                         "<1, 2, 3, 4, 5, 6, 7, 8>",
+                         "<10, 10, 0, 20>",
+                         "<10, 10, -5, -5>",
+                         "<0, 0, -2147483648, -2147483648>"};
+  for (gboolean draw : {0, 1}) {
+    g_object_set(h_->element, "draw", draw, "alpha-mask", draw, nullptr);
+    for (const char* box : boxes) {
+      SCOPED_TRACE(box);
+      gst_util_set_object_arg(G_OBJECT(h_->element), "start-box", box);
+      push(frame("I420", 160, 120));
+      push(frame("I420", 160, 120));
+    }
+    for (const gint v : {G_MININT, -1, 0, 1, 159, 160, G_MAXINT})
+      for (const gint size : {G_MININT, 0, 1, 80, G_MAXINT}) {
+        SCOPED_TRACE("track-box " + std::to_string(v) + " " + std::to_string(size));
+        g_signal_emit_by_name(h_->element, "track-box", v, v, size, size);
+        push(frame("I420", 160, 120));
+      }
+  }
 }
 
 TEST_F(Matrix, PropertiesChangedFromAnotherThreadWhileBuffersFlow) {

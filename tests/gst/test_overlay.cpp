@@ -6,6 +6,7 @@
 #include <gst/video/video.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@ using projtrack::gst::glyph;
 using projtrack::gst::kGlyphHeight;
 using projtrack::gst::kGlyphWidth;
 using projtrack::gst::overlay_text;
+using projtrack::gst::panel_lines;
 using projtrack::gst::text_scale;
 
 struct GstEnvironment : ::testing::Environment {
@@ -31,7 +33,7 @@ const auto* const kGstEnvironment = ::testing::AddGlobalTestEnvironment(new GstE
 
 constexpr const char* kFormats[] = {"GRAY8", "I420", "YV12", "NV12", "NV21", "Y42B", "Y444",
                                     "YUY2",  "UYVY", "BGRx", "RGBx", "xRGB", "xBGR", "BGRA",
-                                    "RGBA",  "ARGB", "ABGR", "BGR",  "RGB"};
+                                    "RGBA",  "ARGB", "ABGR", "BGR",  "RGB",  "AYUV", "A420"};
 
 std::string caps(const char* format, int w, int h) {
   return "video/x-raw,format=" + std::string(format) + ",width=" + std::to_string(w) +
@@ -193,6 +195,103 @@ TEST(Overlay, TextScalesWithTheFrame) {
   gst_video_frame_unmap(&frame);
   EXPECT_EQ(joined(read_text(buf, w, h)), joined(overlay_text(waiting, Method::RayCasting)));
   gst_buffer_unref(buf);
+}
+
+// A frame of `w` × `h` GRAY8 pixels of `value`, mapped, drawn on with `flags`; how many pixels
+// changed and their bounds.
+struct Drawn {
+  int changed = 0;
+  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+};
+
+Drawn draw(int w, int h, const TrackResult& r, const projtrack::Trace& trace, unsigned flags) {
+  GstBuffer* buf = gst_buffer_new_allocate(nullptr, static_cast<gsize>(w) * h, nullptr);
+  gst_buffer_memset(buf, 0, 100, static_cast<gsize>(w) * h);
+  GstVideoInfo info;
+  gst_video_info_set_format(&info, GST_VIDEO_FORMAT_GRAY8, w, h);
+  GstVideoFrame frame;
+  Drawn d;
+  if (!gst_video_frame_map(&frame, &info, buf, GST_MAP_READWRITE)) return d;
+  draw_overlay(&frame, Method::GridFilling, r, trace, flags);
+  const auto* data = static_cast<const guint8*>(GST_VIDEO_FRAME_PLANE_DATA(&frame, 0));
+  const int stride = GST_VIDEO_FRAME_PLANE_STRIDE(&frame, 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (data[y * stride + x] != 100) {
+        ++d.changed;
+        d.x0 = std::min(d.x0, x), d.y0 = std::min(d.y0, y);
+        d.x1 = std::max(d.x1, x), d.y1 = std::max(d.y1, y);
+      }
+  gst_video_frame_unmap(&frame);
+  gst_buffer_unref(buf);
+  return d;
+}
+
+// The text panel fits the frame: at most a quarter of its height (160×120 once lost 40 % of the
+// picture to it), the status's first line always, cut with "..." when it does not fit.
+TEST(Overlay, ThePanelTakesAtMostAQuarterOfTheFrame) {
+  TrackResult r = lost_result();
+  r.push = true;
+  r.detail =
+      "the area passed 2.0x the last frame's: a leak, not filled; five refused frames in "
+      "a row are tolerated, the sixth drops the track and acquisition starts again";
+  for (auto [w, h] :
+       {std::pair{160, 120}, std::pair{320, 240}, std::pair{640, 480}, std::pair{1920, 1080}}) {
+    SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
+    const Drawn d = draw(w, h, r, projtrack::Trace{}, projtrack::gst::kDrawStatus);
+    EXPECT_GT(d.changed, 0);
+    EXPECT_EQ(d.x0, 0);
+    EXPECT_EQ(d.y0, 0);
+    EXPECT_LE(d.y1 + 1, h / 4) << "rows of the panel";
+    EXPECT_LE(d.changed, w * h / 4);
+    const projtrack::gst::PanelText text = panel_lines(r, Method::GridFilling, w, h);
+    ASSERT_GE(text.status_lines, 1u);
+    EXPECT_EQ(text.lines[0].rfind("LOST", 0), 0u) << text.lines[0];
+  }
+  // Small: the status cut short, then the push (what a person must not miss).
+  const projtrack::gst::PanelText small = panel_lines(r, Method::GridFilling, 160, 120);
+  ASSERT_EQ(small.lines.size(), 2u);
+  EXPECT_EQ(small.lines[0].substr(small.lines[0].size() - 3), "...");
+  EXPECT_EQ(small.lines[1], "PUSH");
+  // A detail of a usual length at 1080p: everything, uncut.
+  TrackResult usual = lost_result();
+  usual.push = true;
+  const projtrack::gst::PanelText large = panel_lines(usual, Method::GridFilling, 1920, 1080);
+  EXPECT_EQ(joined(large.lines), joined(overlay_text(usual, Method::GridFilling)));
+}
+
+// draw-flags: each part of the overlay alone draws where that part is, and nothing else.
+TEST(Overlay, DrawFlagsChooseWhatIsDrawn) {
+  using namespace projtrack::gst;
+  TrackResult r = lost_result();
+  r.status = TrackStatus::Ok;
+  r.detail.clear();
+  r.features.inner_point = {300, 260};
+  projtrack::Trace trace;
+  trace.outline = {{262, 260}, {338, 260}};
+  trace.runs.push_back({{270, 250}, {330, 250}});
+  const int w = 640, h = 480;
+  EXPECT_EQ(draw(w, h, r, trace, 0).changed, 0);
+  const Drawn box = draw(w, h, r, trace, kDrawBox);
+  EXPECT_EQ(box.x0, 260);
+  EXPECT_EQ(box.x1, 339);
+  EXPECT_EQ(box.changed, 4 * 79);  // its outline only
+  const Drawn outline = draw(w, h, r, trace, kDrawOutline);
+  EXPECT_EQ(outline.changed, 2 * 4);  // two points, 2×2 at this scale
+  const Drawn grid = draw(w, h, r, trace, kDrawGrid);
+  EXPECT_EQ(grid.changed, 61);
+  EXPECT_EQ(grid.y0, 250);
+  const Drawn inner = draw(w, h, r, trace, kDrawInnerPoint);
+  EXPECT_EQ(inner.changed, 5 * 5);
+  EXPECT_EQ(inner.x0, 298);
+  const Drawn centroid = draw(w, h, r, trace, kDrawCentroid);
+  EXPECT_NEAR((centroid.x0 + centroid.x1) / 2.0, 300, 1);
+  EXPECT_EQ(centroid.changed, 2 * 19 - 1);
+  const Drawn status = draw(w, h, r, trace, kDrawStatus);
+  EXPECT_LT(status.y1, h / 4);
+  EXPECT_GT(status.changed, 0);
+  const Drawn all = draw(w, h, r, trace, kDrawAll);
+  EXPECT_GT(all.changed, status.changed + box.changed);
 }
 
 }  // namespace

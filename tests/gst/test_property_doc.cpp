@@ -5,9 +5,10 @@
 // The table, under "## Properties": | property | type, range | default | meaning |, a row per
 // property or per pair (`inner-point-x`, `inner-point-y`). "type, range" is `uint 3–1024`,
 // `double 0–10⁶`, `int −1…` (up to the type's maximum), `boolean`, `enum (below)` (its values in
-// a paragraph "`name` values (GType `...`"), `enum `a`, `b``, or `` `GstValueArray` of 4 ints``;
-// `, read-only` marks a property that cannot be set. Every other one is writable and, as the
-// section says, safe to change while playing.
+// a paragraph "`name` values (GType `...`"), `enum `a`, `b``, `flags `a`, `b`` (the default: its
+// flags' nicks, `a+b`), or `` `GstValueArray` of 4 ints``; `, read-only` marks a property
+// that cannot be set, `, controllable` one a GstController may drive (GST_PARAM_CONTROLLABLE).
+// Every other one is writable and, as the section says, safe to change while playing.
 #include <gst/gst.h>
 #include <gtest/gtest.h>
 
@@ -209,6 +210,18 @@ void PropertyDoc::check(const DocRow& row, const std::string& name, GParamSpec* 
     GEnumValue* def =
         g_enum_get_value(G_PARAM_SPEC_ENUM(p)->enum_class, G_PARAM_SPEC_ENUM(p)->default_value);
     EXPECT_EQ(row.def, "`" + std::string(def->value_nick) + "`") << "default";
+  } else if (type == "flags") {
+    ASSERT_TRUE(G_TYPE_IS_FLAGS(value_type)) << "not flags";
+    std::set<std::string> nicks;
+    GFlagsClass* f = G_PARAM_SPEC_FLAGS(p)->flags_class;
+    for (guint i = 0; i < f->n_values; ++i) nicks.insert(f->values[i].value_nick);
+    const std::vector<std::string> listed = quoted(rest);
+    EXPECT_EQ(std::set<std::string>(listed.begin(), listed.end()), nicks) << "the flags' values";
+    std::string def;  // the nicks of the default's flags, joined by '+' (as gst-launch-1.0 takes)
+    for (guint i = 0; i < f->n_values; ++i)
+      if (G_PARAM_SPEC_FLAGS(p)->default_value & f->values[i].value)
+        def += (def.empty() ? "" : "+") + std::string(f->values[i].value_nick);
+    EXPECT_EQ(row.def, "`" + def + "`") << "default";
   } else {
     ASSERT_TRUE(kTypes.count(type)) << "unknown type \"" << type << "\"";
     EXPECT_STREQ(g_type_name(value_type), g_type_name(kTypes.at(type))) << "type";
@@ -233,6 +246,8 @@ void PropertyDoc::check(const DocRow& row, const std::string& name, GParamSpec* 
         << "an array of ints";
   }
 
+  EXPECT_EQ((p->flags & GST_PARAM_CONTROLLABLE) != 0, tr.find("controllable") != std::string::npos)
+      << "controllable when documented so";
   EXPECT_TRUE(p->flags & G_PARAM_READABLE) << "readable";
   EXPECT_EQ(!(p->flags & G_PARAM_WRITABLE), read_only) << "writable unless documented read-only";
   if (!read_only) {

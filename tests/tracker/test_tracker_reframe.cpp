@@ -1,0 +1,129 @@
+// The tracker's API for what changes under it between frames (Tracker::rescale, relearn) and for
+// its silhouette (Tracker::silhouette, outline_polygons): a track that goes on through a new
+// resolution or a new way of reading colours, and the object's outline.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "projtrack/tracker.hpp"
+#include "scenes.hpp"
+
+namespace projtrack {
+namespace {
+
+// A reddish disc on a grey-green wall, as I420 (the appearance model's colours).
+struct Picture {
+  cv::Mat i420;
+  int w, h;
+  ColorView view() const { return test::i420_view(i420, w, h); }
+  ImageView gray() const { return ImageView(i420.data, w, h, w); }
+};
+
+Picture disc(int w, int h, double cx, double cy, double r) {
+  cv::Mat bgr(h, w, CV_8UC3, cv::Scalar(90, 120, 100));
+  cv::circle(bgr, {static_cast<int>(std::lround(cx * 16)), static_cast<int>(std::lround(cy * 16))},
+             static_cast<int>(std::lround(r * 16)), cv::Scalar(40, 60, 200), cv::FILLED,
+             cv::LINE_AA, 4);
+  Picture p{cv::Mat(), w, h};
+  cv::cvtColor(bgr, p.i420, cv::COLOR_BGR2YUV_I420);
+  return p;
+}
+
+TrackerParams manual() {
+  TrackerParams tp;
+  tp.acquisition = Acquisition::Manual;
+  tp.smoothing = false;
+  return tp;
+}
+
+TEST(Reframe, ARescaledTrackGoesOnWithoutANewAcquisition) {
+  const TrackerParams tp = manual();
+  Tracker t;
+  t.seed({160, 120});
+  TrackResult r;
+  for (int i = 0; i < 3; ++i)
+    r = t.track(disc(320, 240, 160, 120, 40).view(), EdgeParams{}, i / 30.0,
+                Method::GapTolerantFilling, {}, tp);
+  ASSERT_EQ(r.status, TrackStatus::Ok) << r.detail;
+  const double depth = r.pose.depth;
+  int w0 = 320, h0 = 240;
+  for (const auto& [w, h] : {std::pair{160, 120}, std::pair{640, 480}}) {
+    SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
+    const double k = w / 320.0;  // the disc's scale in this frame
+    t.rescale(w0, h0, w, h);
+    w0 = w;
+    h0 = h;
+    ASSERT_TRUE(t.inner_point());
+    EXPECT_NEAR(t.inner_point()->x, 160 * k, 2 * k + 1);
+    r = t.track(disc(w, h, 160 * k, 120 * k, 40 * k).view(), EdgeParams{}, 1,
+                Method::GapTolerantFilling, {}, tp);
+    EXPECT_EQ(r.status, TrackStatus::Ok) << r.detail;
+    EXPECT_FALSE(r.acquired);
+    EXPECT_NEAR(r.features.centroid.x, 160 * k, 1.5);
+    EXPECT_NEAR(r.pose.depth, depth, 0.05 * depth) << "depth goes on";
+  }
+}
+
+TEST(Reframe, RelearningFindsTheObjectWhoseColoursAreReadAnotherWay) {
+  const TrackerParams tp = manual();
+  Tracker t;
+  t.seed({160, 120});
+  const Picture colour = disc(320, 240, 160, 120, 40);
+  for (int i = 0; i < 3; ++i)
+    ASSERT_EQ(
+        t.track(colour.view(), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, {}, tp).status,
+        TrackStatus::Ok);
+  // The same picture, gray: colours learned from chroma mean nothing to it.
+  t.relearn();
+  const TrackResult r =
+      t.track(colour.gray(), EdgeParams{}, 0.1, Method::GapTolerantFilling, {}, tp);
+  EXPECT_EQ(r.status, TrackStatus::Ok) << r.detail;
+  EXPECT_FALSE(r.acquired);
+  EXPECT_NEAR(r.features.centroid.x, 160, 1.5);
+}
+
+TEST(Reframe, TheSilhouetteAndItsOutline) {
+  const TrackerParams tp = manual();
+  Tracker t;
+  EXPECT_TRUE(t.silhouette().empty());
+  t.seed({160, 120});
+  const TrackResult r = t.track(disc(320, 240, 160, 120, 40).view(), EdgeParams{}, 0,
+                                Method::GapTolerantFilling, {}, tp);
+  ASSERT_EQ(r.status, TrackStatus::Ok) << r.detail;
+  const SilhouetteMask s = t.silhouette();
+  ASSERT_FALSE(s.empty());
+  EXPECT_TRUE(s.contains({160, 120}));
+  EXPECT_FALSE(s.contains({10, 10}));
+  EXPECT_FALSE(s.contains({-5, 120}));
+  const std::vector<std::vector<Point2i>> outline = outline_polygons(s);
+  ASSERT_EQ(outline.size(), 1u);
+  EXPECT_GE(outline[0].size(), 8u);
+  EXPECT_LE(outline[0].size(), 64u) << "simplified";
+  for (const Point2i& p : outline[0])
+    EXPECT_NEAR(std::hypot(p.x - 160, p.y - 120), 40, 3.5) << p.x << "," << p.y;
+}
+
+TEST(Reframe, OutlinePolygonsOfPiecesAtAWorkScale) {
+  // Two squares of 3×3 work pixels at scale 4, the larger first; vertices at pixel centres.
+  std::vector<std::uint8_t> mask(10 * 5, 0);
+  for (int y = 1; y < 4; ++y)
+    for (int x = 5; x < 9; ++x) mask[y * 10 + x] = 1;
+  mask[2 * 10 + 1] = 1;
+  const SilhouetteMask s{ImageView(mask.data(), 10, 5, 10), Rect{2, 3, 10, 5}, 4, 64, 40};
+  const std::vector<std::vector<Point2i>> outline = outline_polygons(s);
+  ASSERT_EQ(outline.size(), 2u);
+  ASSERT_EQ(outline[0].size(), 4u);
+  for (const Point2i& p : outline[0]) {
+    EXPECT_TRUE(p.x == (2 + 5) * 4 + 2 || p.x == (2 + 8) * 4 + 2) << p.x;
+    EXPECT_TRUE(p.y == (3 + 1) * 4 + 2 || p.y == (3 + 3) * 4 + 2) << p.y;
+  }
+  ASSERT_EQ(outline[1].size(), 1u);  // a single work pixel
+  EXPECT_EQ(outline[1][0].x, (2 + 1) * 4 + 2);
+  EXPECT_EQ(outline[1][0].y, (3 + 2) * 4 + 2);
+  EXPECT_TRUE(outline_polygons(SilhouetteMask{}).empty());
+}
+
+}  // namespace
+}  // namespace projtrack
