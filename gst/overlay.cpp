@@ -218,7 +218,11 @@ std::vector<std::string> overlay_text(const TrackResult& r, Method method) {
     lines.push_back(std::string(what) + format(" %.0f, %.0f  area %.0f px", r.features.centroid.x,
                                                r.features.centroid.y, r.features.area));
   }
-  if (r.push) lines.push_back("PUSH");
+  if (r.gesture != Gesture::None) {  // PUSH, PRESS, RELEASE
+    std::string g(gesture_name(r.gesture));
+    for (char& c : g) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    lines.push_back(g);
+  }
   lines.push_back(std::string("method ") + method_info(method).nick);
   return lines;
 }

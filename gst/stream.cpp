@@ -163,7 +163,8 @@ GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
 
   Stream& st = *self->stream;
   report_status(self, st, r);
-  if (r.push) GST_INFO_OBJECT(self, "gesture: push");
+  if (r.gesture != Gesture::None)
+    GST_INFO_OBJECT(self, "gesture: %s", gesture_name(r.gesture).data());
   const std::optional<Point2i>& inner = r.inner_point;
   GST_OBJECT_LOCK(self);
   self->tracked_x = inner ? inner->x : -1;

@@ -33,7 +33,7 @@ void TrackerState::drop(Keep keep) {
   t.refused_in_a_row = 0;
   t.refusals = 0;
   t.searched = 0;
-  pointer.cancel_gesture();
+  pointer.end();
   motion.reset();
   moved = {};
   moved_before = {};
@@ -41,7 +41,6 @@ void TrackerState::drop(Keep keep) {
     object.forget_position();
   } else {
     object.forget();
-    pointer.forget();
   }
 }
 
@@ -60,10 +59,7 @@ bool TrackerState::accept(const Features& f, bool resumed, double t, int width, 
   if (starts) {
     k.seeded = k.inner.has_value() && !resumed;
     k.still = 0;
-    if (resumed && pointer.started())
-      pointer.resume();
-    else
-      pointer.start(f.area);
+    pointer.restart();  // depth needs no reference: one rule however the track (re)starts
   }
   k.velocity = k.last
                    ? Point2d{f.centroid.x - k.last->centroid.x, f.centroid.y - k.last->centroid.y}
@@ -81,12 +77,9 @@ bool TrackerState::accept(const Features& f, bool resumed, double t, int width, 
 void TrackerState::refuse() {
   ++track_.refused_in_a_row;
   track_.refusals = (track_.refusals << 1) | 1u;
-  pointer.cancel_gesture();
+  pointer.refuse();
 }
 
-void TrackerState::forget_colours() {
-  object.forget();
-  pointer.forget();
-}
+void TrackerState::forget_colours() { object.forget(); }
 
 }  // namespace projtrack

@@ -128,7 +128,7 @@ TEST(Overlay, TextSaysTheStatusWhyAndThePointer) {
   TrackResult tracking = lost_result();
   tracking.status = TrackStatus::Ok;
   tracking.detail.clear();
-  tracking.push = true;
+  tracking.gesture = projtrack::Gesture::Push;
   const std::vector<std::string> t = overlay_text(tracking, Method::GridFilling);
   EXPECT_EQ(t[0], "TRACKING");
   EXPECT_EQ(t[2], "centroid 300, 260  area 4321 px");
