@@ -16,25 +16,22 @@ constexpr double kPushJump = 0.9;
 
 double log_or_nan(double x) { return x > 0 && std::isfinite(x) ? std::log(x) : NAN; }
 
-// The least-squares slope of (t, v) pairs; 0 for fewer than two instants.
+// The samples of `from` at or after `since` as (t, v) into `out`.
 template <class Samples>
-double slope_of(const Samples& s) {
-  double tm = 0, vm = 0;
-  for (const auto& x : s) tm += x.t, vm += x.v;
-  tm /= static_cast<double>(s.size());
-  vm /= static_cast<double>(s.size());
-  double stt = 0, stv = 0;
-  for (const auto& x : s) stt += (x.t - tm) * (x.t - tm), stv += (x.t - tm) * (x.v - vm);
-  return stt > 0 ? stv / stt : 0.0;
+const std::vector<TimedValue>& timed(const Samples& from, double since,
+                                     std::vector<TimedValue>& out) {
+  out.clear();
+  for (const auto& x : from)
+    if (x.t >= since) out.push_back({x.t, x.v});
+  return out;
 }
 
+// Drops the samples older than `oldest` from the front of `v` (never allocates).
 template <class Samples>
-double median_v(const Samples& s) {
-  std::vector<double> v;
-  for (const auto& x : s) v.push_back(x.v);
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+void drop_before(Samples& v, double oldest) {
+  auto it = v.begin();
+  while (it != v.end() && it->t < oldest) ++it;
+  v.erase(v.begin(), it);
 }
 
 }  // namespace
@@ -85,7 +82,12 @@ Gesture GestureDetector::at_rest(const Sample& s) {
 
 void GestureDetector::enter(const Sample& s, const TrendLine& line) {
   state_ = State::Rising;
-  rise_ = Rise{};
+  std::vector<Sample> samples = std::move(rise_.samples), forward = std::move(rise_.forward);
+  samples.clear();
+  forward.clear();
+  rise_ = Rise{};  // its buffers kept, emptied: a gesture allocates nothing once warm
+  rise_.samples = std::move(samples);
+  rise_.forward = std::move(forward);
   rise_.line = line;
   rise_.theta = std::max(std::log1p(p_.threshold), p_.noise_factor * noise_);
   rise_.t_enter = s.t;
@@ -156,11 +158,9 @@ Gesture GestureDetector::held(const Sample& s) {
   return Gesture::None;
 }
 
-bool GestureDetector::plateau(double t) const {
-  std::vector<Sample> late;
-  for (const Sample& f : rise_.forward)
-    if (f.t >= t - p_.hold / 2) late.push_back(f);
-  return late.size() >= 3 && 2 * std::abs(slope_of(late)) <= rise_.speed;
+bool GestureDetector::plateau(double t) {
+  const std::vector<TimedValue>& late = timed(rise_.forward, t - p_.hold / 2, timed_);
+  return late.size() >= 3 && 2 * std::abs(least_squares(late).slope) <= rise_.speed;
 }
 
 bool GestureDetector::scaled() const {
@@ -176,18 +176,12 @@ bool GestureDetector::scaled() const {
 // the fall does not tilt it), since a drift goes on while a press is held.
 Gesture GestureDetector::pressed_step(const Sample& s) {
   hold_.push_back(s);
-  while (hold_.front().t < s.t - p_.hold - p_.trend_guard) hold_.pop_front();
-  std::vector<Sample> held;
+  drop_before(hold_, s.t - p_.hold - p_.trend_guard);
+  timed_.clear();
   for (const Sample& h : hold_)
-    if (h.t <= s.t - p_.trend_guard) held.push_back(h);
-  if (held.size() < 3) return Gesture::None;
-  const double slope = slope_of(held);
-  double tm = 0;
-  for (const Sample& h : held) tm += h.t;
-  tm /= static_cast<double>(held.size());
-  std::vector<Sample> level;  // the held depth brought to its mean time along the line
-  for (const Sample& h : held) level.push_back({h.t, h.v - slope * (h.t - tm), NAN, NAN});
-  const TrendLine line{median_v(level), slope, tm, NAN};
+    if (h.t <= s.t - p_.trend_guard) timed_.push_back({h.t, h.v});
+  if (timed_.size() < 3) return Gesture::None;
+  const TrendLine line = median_line(timed_, least_squares(timed_).slope, scratch_);
   if (s.v >= line.at(s.t) - hold_rise_ / 2) return Gesture::None;
   turn_back(s, line, hold_rise_);
   return Gesture::Release;
@@ -199,7 +193,8 @@ void GestureDetector::turn_back(const Sample& s, const TrendLine& line, double t
   back_r_ = s.v - line.at(s.t);
   back_theta_ = theta;
   t_back_ = s.t;
-  back_tail_.assign(1, s);
+  back_tail_.clear();
+  back_tail_.push_back(s);
 }
 
 // After a gesture, while the depth falls back toward the line it left (or it was held on):
@@ -211,7 +206,7 @@ void GestureDetector::returning(const Sample& s) {
   back_r_ = r;
   if (falling && s.t - t_back_ <= p_.hold) {
     back_tail_.push_back(s);
-    if (back_tail_.size() > 2) back_tail_.pop_front();
+    if (back_tail_.size() > 2) back_tail_.erase(back_tail_.begin());
     return;
   }
   start_again();

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <cmath>
-#include <deque>
 #include <vector>
 
 #include "pointer/depth_trend.hpp"
@@ -48,7 +47,7 @@ class GestureDetector {
     double last_r = 0, max_step = 0;  // the last sample; the largest one-frame rise
     int above = 0;                    // samples above theta
     std::vector<Sample> samples;      // since it entered, for the trend if it is none
-    std::deque<Sample> forward;       // (t, r) since forward, for a press's plateau
+    std::vector<Sample> forward;      // (t, r) since forward, for a press's plateau
   };
 
   Gesture at_rest(const Sample& s);
@@ -58,7 +57,7 @@ class GestureDetector {
   void returning(const Sample& s);
   void turn_back(const Sample& s, const TrendLine& line, double theta);
   bool scaled() const;
-  bool plateau(double t) const;
+  bool plateau(double t);
   void enter(const Sample& s, const TrendLine& line);
   void back_to_rest();
   void start_again();
@@ -73,13 +72,16 @@ class GestureDetector {
   double t_gesture_ = -1e300;  // the last push's end: a second one may follow at once
   Sample last_rest_{0, 0, NAN, NAN};
   Rise rise_;
-  double hold_rise_ = 0;     // a press's rise, ln depth
-  std::deque<Sample> hold_;  // while pressed, the last `hold` + guard s
+  double hold_rise_ = 0;      // a press's rise, ln depth
+  std::vector<Sample> hold_;  // while pressed, the last `hold` + guard s
   // Returning: the line it falls back toward, the last sample against it, when it turned back,
   // the last two samples (the level the trend starts again from).
   TrendLine back_line_;
   double back_r_ = 0, back_theta_ = 0, t_back_ = 0;
-  std::deque<Sample> back_tail_;
+  std::vector<Sample> back_tail_;
+  // Working space kept between frames: once warm, no frame allocates.
+  std::vector<TimedValue> timed_;
+  std::vector<double> scratch_;
 };
 
 }  // namespace projtrack

@@ -5,31 +5,17 @@
 
 #include <cmath>
 #include <functional>
-#include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "projtrack/edge_detection.hpp"
 #include "projtrack/tracker.hpp"
+#include "scenes.hpp"
 
 namespace projtrack {
 namespace {
 
-// A bright disc on a dark frame (radius 0: none), as gray and its Canny edges.
-struct Frame {
-  cv::Mat gray, edges;
-  ImageView g() const { return ImageView(gray.data, gray.cols, gray.rows, gray.step); }
-  ImageView e() const { return ImageView(edges.data, edges.cols, edges.rows, edges.step); }
-};
-
-Frame disc(int r, int w = 320, int h = 240) {
-  Frame f;
-  f.gray = cv::Mat(h, w, CV_8U, cv::Scalar(40));
-  if (r > 0) cv::circle(f.gray, {w / 2, h / 2}, r, cv::Scalar(210), cv::FILLED, cv::LINE_AA);
-  EdgeMap map;
-  const ImageView e = map.detect(f.g(), {});
-  f.edges = cv::Mat(h, w, CV_8U, const_cast<std::uint8_t*>(e.data), e.stride).clone();
-  return f;
-}
+// A bright disc (radius 0: none) in the middle of a dark frame, and its edges.
+using Frame = test::GrayFrame;
+Frame disc(int r, int w = 320, int h = 240) { return test::disc_frame(w / 2, h / 2, r, w, h); }
 
 TrackerParams edges_model(Acquisition a) {
   TrackerParams tp;

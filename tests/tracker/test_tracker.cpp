@@ -15,21 +15,8 @@ namespace projtrack {
 namespace {
 
 // A bright disc on a dark frame, as gray and as Canny edges.
-struct Frame {
-  cv::Mat gray, edges;
-  ImageView g() const { return ImageView(gray.data, gray.cols, gray.rows, gray.step); }
-  ImageView e() const { return ImageView(edges.data, edges.cols, edges.rows, edges.step); }
-};
-
-Frame disc_frame(int cx, int cy, int r, int w = 320, int h = 240) {
-  Frame f;
-  f.gray = cv::Mat(h, w, CV_8U, cv::Scalar(40));
-  cv::circle(f.gray, {cx, cy}, r, cv::Scalar(210), cv::FILLED, cv::LINE_AA);
-  EdgeMap map;
-  const ImageView e = map.detect(f.g(), {});
-  f.edges = cv::Mat(h, w, CV_8U, const_cast<std::uint8_t*>(e.data), e.stride).clone();
-  return f;
-}
+using Frame = test::GrayFrame;
+using test::disc_frame;
 
 // The paper's tracker: the estimator on the edges alone.
 TrackerParams edges_model() {
@@ -211,13 +198,9 @@ TEST(Tracker, AutoAcquisitionFindsTheMovingObject) {
 TEST(Tracker, AutoAcquisitionIgnoresSlivers) {
   // A 5 px wide bar moving: a closed region, but too thin to be an object worth tracking.
   const auto bar = [](int x) {
-    Frame f;
-    f.gray = cv::Mat(240, 320, CV_8U, cv::Scalar(40));
-    f.gray(cv::Rect(x, 40, 5, 160)).setTo(210);
-    EdgeMap map;
-    const ImageView e = map.detect(f.g(), {});
-    f.edges = cv::Mat(240, 320, CV_8U, const_cast<std::uint8_t*>(e.data), e.stride).clone();
-    return f;
+    cv::Mat gray(240, 320, CV_8U, cv::Scalar(40));
+    gray(cv::Rect(x, 40, 5, 160)).setTo(210);
+    return test::with_edges(gray);
   };
   // Every seed tried (pixel-filling's 13 fills of the background pass the default work budget
   // of a frame this small): what is judged here is what acquisition does with them.
