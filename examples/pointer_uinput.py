@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The tracked object as the system's pointer, the paper's "3D cursor-like input device": x and y
-move the pointer over the screen, a push toward the camera clicks. Through Linux's uinput, with
-Debian's python3-evdev; the new device is an absolute pointer (a tablet, to the desktop).
+move the pointer over the screen, a push toward the camera clicks, a push held is a drag (the
+button down until the object comes back). Through Linux's uinput, with Debian's python3-evdev;
+the new device is an absolute pointer (a tablet, to the desktop).
 
     sudo pointer_uinput.py                     # the camera (/dev/video0), mirrored like a mirror
     pointer_uinput.py --dry-run --generated    # print the events instead of sending them
@@ -25,6 +26,10 @@ evdev = module('pointer_uinput', 'evdev', 'python3-evdev')
 AbsInfo, UInput, ecodes = evdev.AbsInfo, evdev.UInput, evdev.ecodes
 
 AXIS_MAX = 65535  # the device's absolute range on both axes; the desktop maps it to the screen
+# The left button's values for each gesture of the element's `gesture` field: a push is a click
+# (down and up: two pushes are a double click), a press holds the button down (a drag while the
+# object moves), a release lets it up (also sent when the track ends while pressed).
+BUTTON = {'push': (1, 0), 'press': (1,), 'release': (0,)}
 
 
 class DryRun:
@@ -77,17 +82,14 @@ def main():
     moved = [0]
 
     def on_projtrack(s):
-        if s.get_string('status') not in TRACKING:  # lost, searching: the pointer stays
-            return
-        x = s.get_value('position-x')
-        device.write(ecodes.EV_ABS, ecodes.ABS_X, to_axis(-x if mirror else x))
-        device.write(ecodes.EV_ABS, ecodes.ABS_Y, to_axis(s.get_value('position-y')))
-        device.syn()
-        moved[0] += 1
-        if s.get_string('gesture') == 'push':  # a click: press and release
-            device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, 1)
+        if s.get_string('status') in TRACKING:  # lost, searching: the pointer stays
+            x = s.get_value('position-x')
+            device.write(ecodes.EV_ABS, ecodes.ABS_X, to_axis(-x if mirror else x))
+            device.write(ecodes.EV_ABS, ecodes.ABS_Y, to_axis(s.get_value('position-y')))
             device.syn()
-            device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, 0)
+            moved[0] += 1
+        for value in BUTTON.get(s.get_string('gesture'), ()):  # whatever the status: a release
+            device.write(ecodes.EV_KEY, ecodes.BTN_LEFT, value)  # must come when the track ends
             device.syn()
 
     try:

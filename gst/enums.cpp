@@ -65,7 +65,7 @@ GType gst_projtrack_updates_get_type(void) {
   static const GEnumValue values[] = {
       {static_cast<gint>(Updates::EveryFrame), "A message for every frame", "every-frame"},
       {static_cast<gint>(Updates::OnChange),
-       "A message when the status changes, an object is acquired, or a push completes",
+       "A message when the status changes, an object is acquired, or a gesture completes",
        "on-change"},
       {static_cast<gint>(Updates::None), "No messages (the ROI meta is still attached)", "none"},
       {0, nullptr, nullptr}};

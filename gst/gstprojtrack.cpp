@@ -29,7 +29,8 @@
  * finds it again after losing it: an estimate whose area leaks or collapses is refused and
  * reported as `status=lost` with the last good features. Every tracked frame carries a 3D
  * pointer: `position-x`, `position-y` in [-1, 1] and a relative `depth` (smoothed by a One Euro
- * filter), and a quick push toward the camera posts `gesture=push`.
+ * filter), and moving it toward the camera posts `gesture=push` (a click), `press` and
+ * `release` (a drag).
  *
  * An inner point or a box can also be given: the `inner-point-x`/`inner-point-y` and
  * `start-box` properties, the `track-point`, `track-box` and `reset` action signals (one call, no

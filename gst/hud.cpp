@@ -83,17 +83,21 @@ int line_budget(int height, int scale) {
   return std::max(1, (height / 4 - 2 * pad + scale) / line_height);
 }
 
+bool is_gesture(const std::string& line) {
+  return line == "PUSH" || line == "PRESS" || line == "RELEASE";
+}
+
 // Which of the lines after the status (`text`'s indexes 1...) a panel keeps, in the order a
-// person needs them: a push, the pointer, the centroid, the method; each takes its wrapped
+// person needs them: a gesture, the pointer, the centroid, the method; each takes its wrapped
 // lines while they fit in `budget` with one line of the status. Returns the lines they take.
 int keep_lines(const std::vector<std::string>& text,
                const std::vector<std::vector<std::string>>& wrapped, int budget,
                std::vector<bool>& kept) {
   std::vector<std::size_t> order;
   for (std::size_t i = 1; i < text.size(); ++i)
-    if (text[i] == "PUSH") order.push_back(i);
+    if (is_gesture(text[i])) order.push_back(i);
   for (std::size_t i = 1; i < text.size(); ++i)
-    if (text[i] != "PUSH") order.push_back(i);
+    if (!is_gesture(text[i])) order.push_back(i);
   int used = 0;
   kept.assign(text.size(), false);
   for (std::size_t i : order) {
@@ -118,7 +122,11 @@ std::vector<std::string> overlay_text(const TrackResult& r, Method method) {
     lines.push_back(std::string(what) + format(" %.0f, %.0f  area %.0f px", r.features.centroid.x,
                                                r.features.centroid.y, r.features.area));
   }
-  if (r.push) lines.push_back("PUSH");
+  if (r.gesture != Gesture::None) {  // PUSH, PRESS, RELEASE
+    std::string g(gesture_name(r.gesture));
+    for (char& c : g) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    lines.push_back(g);
+  }
   lines.push_back(std::string("method ") + method_info(method).nick);
   return lines;
 }

@@ -50,7 +50,9 @@ GstStructure* result_structure(const FrameReport& report) {
     gst_structure_set(s, "position-x", G_TYPE_DOUBLE, r.pose.x, "position-y", G_TYPE_DOUBLE,
                       r.pose.y, "depth", G_TYPE_DOUBLE, r.pose.depth, nullptr);
   }
-  if (r.push) gst_structure_set(s, "gesture", G_TYPE_STRING, "push", nullptr);
+  // push, press or release, on the frame it completed (a release also when the track ended)
+  if (r.gesture != Gesture::None)
+    gst_structure_set(s, "gesture", G_TYPE_STRING, gesture_name(r.gesture).data(), nullptr);
   if (has_features(r.status)) set_outline(s, report.outline);
   return s;
 }
@@ -107,7 +109,7 @@ GstMessage* result_message(GstProjtrack* self, GstBuffer* buffer, const FrameRep
 }
 
 bool worth_posting(Updates updates, const TrackResult& r, std::optional<TrackStatus>& last) {
-  const bool changed = last != r.status || r.acquired || r.push;
+  const bool changed = last != r.status || r.acquired || r.gesture != Gesture::None;
   last = r.status;
   return updates == Updates::EveryFrame || (updates == Updates::OnChange && changed);
 }

@@ -167,7 +167,8 @@ void report(GstProjtrack* self, GstBuffer* buffer, const Settings& s, const Trac
             std::chrono::steady_clock::time_point start) {
   Stream& st = *self->stream;
   report_status(self, st, r);
-  if (r.push) GST_INFO_OBJECT(self, "gesture: push");
+  if (r.gesture != Gesture::None)
+    GST_INFO_OBJECT(self, "gesture: %s", gesture_name(r.gesture).data());
   const std::optional<Point2i>& inner = r.inner_point;
   GST_OBJECT_LOCK(self);
   self->tracked_x = inner ? inner->x : -1;

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "projtrack/gesture.hpp"
 #include "projtrack/status.hpp"
 
 namespace projtrack::python {
@@ -36,7 +37,8 @@ std::string describe(const Result& res) {
 void bind_result(py::module_& m) {
   py::class_<Pose>(m, "Pose",
                    "The 3D pointer: x and y in [-1, 1] (0 at the frame's centre, +1 at "
-                   "its right and bottom edges), depth 1 at acquisition, rising as "
+                   "its right and bottom edges), depth the square root of the object's share of "
+                   "the frame, rising as "
                    "the object nears the camera.")
       .def_readonly("x", &Pose::x)
       .def_readonly("y", &Pose::y)
@@ -96,7 +98,14 @@ void bind_result(py::module_& m) {
           [](const Result& r) { return r.r.has_pose ? py::cast(r.r.raw_pose) : py::none(); },
           "the pointer before smoothing")
       .def_property_readonly(
-          "push", [](const Result& r) { return r.r.push; },
+          "gesture",
+          [](const Result& r) {
+            return r.r.gesture == Gesture::None ? py::none()
+                                                : py::cast(std::string(gesture_name(r.r.gesture)));
+          },
+          "'push' (a click), 'press' or 'release' (a drag) completed on this frame, else None")
+      .def_property_readonly(
+          "push", [](const Result& r) { return r.r.gesture == Gesture::Push; },
           "a push toward the camera (a click) completed on this frame")
       .def_property_readonly(
           "mask", [](const Result& r) { return r.mask; },

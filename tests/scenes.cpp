@@ -2,6 +2,9 @@
 
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
+#include <utility>
+
+#include "projtrack/edge_detection.hpp"
 
 namespace projtrack::test {
 
@@ -76,6 +79,22 @@ std::vector<Point2i> interior_points(const Scene& s, int step) {
     for (int x = step / 2; x < s.interior.cols; x += step)
       if (s.is_interior({x, y})) points.push_back({x, y});
   return points;
+}
+
+GrayFrame with_edges(cv::Mat gray) {
+  GrayFrame f;
+  f.gray = std::move(gray);
+  EdgeMap map;
+  const ImageView e = map.detect(f.g(), {});
+  f.edges =
+      cv::Mat(f.gray.rows, f.gray.cols, CV_8U, const_cast<std::uint8_t*>(e.data), e.stride).clone();
+  return f;
+}
+
+GrayFrame disc_frame(int cx, int cy, int r, int w, int h) {
+  cv::Mat gray(h, w, CV_8U, cv::Scalar(40));
+  if (r > 0) cv::circle(gray, {cx, cy}, r, cv::Scalar(210), cv::FILLED, cv::LINE_AA);
+  return with_edges(gray);
 }
 
 cv::Mat random_i420(int w, int h, int max) {

@@ -40,6 +40,16 @@ Point2i open_gap_right(Scene& s, int x_start, int y);
 // Interior pixels on a regular lattice of the given step (seeds to start estimates from).
 std::vector<Point2i> interior_points(const Scene& s, int step);
 
+// A gray frame and its edges as the tracker's default edge detection finds them.
+struct GrayFrame {
+  cv::Mat gray, edges;  // CV_8U
+  ImageView g() const { return ImageView(gray.data, gray.cols, gray.rows, gray.step); }
+  ImageView e() const { return ImageView(edges.data, edges.cols, edges.rows, edges.step); }
+};
+GrayFrame with_edges(cv::Mat gray);
+// A bright disc (radius `r`, none for 0) centred at (cx, cy) on a dark `w` × `h` frame.
+GrayFrame disc_frame(int cx, int cy, int r, int w = 320, int h = 240);
+
 // A `w` × `h` frame of random BGR colours (channels in [0, max)) converted to I420.
 cv::Mat random_i420(int w, int h, int max);
 

@@ -1,5 +1,5 @@
 // Follows one object from frame to frame: finds it, keeps its inner point, notices when it is
-// lost, finds it again, and turns its features into a 3D pointer (x, y, depth) with push clicks.
+// lost, finds it again, and turns its features into a 3D pointer (x, y, depth) with gestures.
 //
 // One frame flows one way through the stages, a folder of src/ each (docs/architecture.md):
 //   frame → edges (edges/) and appearance (appearance/)
@@ -22,6 +22,7 @@
 #include "edge_detection.hpp"
 #include "features.hpp"
 #include "geometry.hpp"
+#include "gesture.hpp"
 #include "image_view.hpp"
 #include "method.hpp"
 #include "params.hpp"
@@ -45,7 +46,8 @@ struct TrackResult {
   bool has_pose = false;  // tracking or lost (held) with an acquired object
   Pose pose;              // smoothed (when TrackerParams::smoothing)
   Pose raw_pose;
-  bool push = false;  // a push completed on this frame
+  Gesture gesture = Gesture::None;  // a gesture completed on this frame (a release: also when
+                                    // the track ended while pressed)
   // The work this frame's estimates did (work units, work_budget.hpp), against its budget
   // (frame_work_limit(): WorkBudget::kUnlimited when TrackerParams::max_work is 0).
   std::uint64_t work = 0;

@@ -6,10 +6,10 @@
 #include <cstdint>
 
 #include "finder_params.hpp"
+#include "gesture.hpp"
 #include "motion_detector.hpp"
 #include "object_model_params.hpp"
 #include "one_euro_filter.hpp"
-#include "push_detector.hpp"
 
 namespace projtrack {
 
@@ -94,7 +94,7 @@ struct TrackerParams {
 
   bool smoothing = true;  // One Euro filter on x, y and depth
   OneEuroFilter::Params filter;
-  PushDetector::Params push;
+  GestureParams push;  // push, press and release from depth (the element's push-threshold)
 };
 
 // The least budget a frame gets, work units: a tiny frame can still afford the default rays.

@@ -103,6 +103,7 @@ TrackResult Tracker::Impl::track(const ColorView& frame, EdgeSource& edges, cons
   r.inner_point = state.track().inner;
   r.work = work.budget.spent();
   r.work_limit = work.budget.limit();
+  r.gesture = state.pointer.take_gesture();  // whichever transition of the frame made it
   return r;
 }
 
@@ -137,7 +138,6 @@ void Tracker::Impl::accept(const Features& f, int width, int height, const Frame
   r.has_pose = true;
   r.pose = state.pointer.pose();
   r.raw_pose = state.pointer.raw();
-  r.push = state.pointer.pushed();
 }
 
 namespace {

@@ -38,7 +38,7 @@ void TrackerState::drop(Keep keep) {
   t.refused_in_a_row = 0;
   t.refusals = 0;
   t.searched = 0;
-  pointer.cancel_gesture();
+  pointer.end();
   motion.reset();
   moved = {};
   moved_before = {};
@@ -46,7 +46,6 @@ void TrackerState::drop(Keep keep) {
     object.forget_position();
   } else {
     object.forget();
-    pointer.forget();
   }
 }
 
@@ -66,10 +65,7 @@ bool TrackerState::accept(const Features& f, bool resumed, double t, int width, 
   if (starts) {
     k.seeded = k.inner.has_value() && !resumed;
     k.still = 0;
-    if (resumed && pointer.started())
-      pointer.resume();
-    else
-      pointer.start(f.area);
+    pointer.restart();  // depth needs no reference: one rule however the track (re)starts
   }
   k.velocity = k.last
                    ? Point2d{f.centroid.x - k.last->centroid.x, f.centroid.y - k.last->centroid.y}
@@ -87,13 +83,10 @@ bool TrackerState::accept(const Features& f, bool resumed, double t, int width, 
 void TrackerState::refuse() {
   ++track_.refused_in_a_row;
   track_.refusals = (track_.refusals << 1) | 1u;
-  pointer.cancel_gesture();
+  pointer.refuse();
 }
 
-void TrackerState::forget_colours() {
-  object.forget();
-  pointer.forget();
-}
+void TrackerState::forget_colours() { object.forget(); }
 
 namespace {
 
@@ -134,7 +127,7 @@ void TrackerState::rescale(double sx, double sy) {
   t.velocity = {t.velocity.x * sx, t.velocity.y * sy};
   t.lost_area *= sx * sy;
   t.lost_centroid = scaled(t.lost_centroid, sx, sy);
-  pointer.rescale_area(sx * sy);
+  // Depth, √(area ÷ the frame's area), needs no rescaling.
   edges_acquisition.reset();
   relearn();
 }

@@ -54,16 +54,16 @@ class TrackerState {
   // The user's point or box: a new object, tracked from there on the next frame.
   void seed(Point2i p);
   void seed_box(const Rect& box);
-  // Forgets the object, its colours and its depth: acquisition starts over.
+  // Forgets the object and its colours: acquisition starts over.
   void reset();
-  // Ends the track; with Keep::Colours the object's colours and first area stay known, to find
-  // it again (the appearance model). The motion history starts afresh either way.
+  // Ends the track (a press held is released); with Keep::Colours the object's colours stay
+  // known, to find it again (the appearance model). The motion history starts afresh either way.
   enum class Keep { Nothing, Colours };
   void drop(Keep keep);
   // Another object model: the same object (its inner point) found again its own way.
   void use_model(ObjectModelKind kind);
   // Takes `f` as this frame's estimate, at `t` seconds in a width × height frame; `resumed`: the
-  // object found again by its colours (depth goes on). True when a track (re)starts here.
+  // object found again by its colours. True when a track (re)starts here.
   bool accept(const Features& f, bool resumed, double t, int width, int height,
               const TrackerParams& tp);
   // One more refused frame: the last accepted estimate stays; a gesture in progress does not.

@@ -348,8 +348,8 @@ TEST(SilhouetteModel, FoundAgainByItsColoursWithDepthGoingOn) {
   }
   EXPECT_TRUE(acquired);
   expect_close(r, f, 3, 0.1, "found again");
-  // Depth goes on from the first acquisition: sqrt(area now / area then), not 1.
-  EXPECT_GT(r.raw_pose.depth, 1.1);
+  // Depth is the object's size, not reset by the re-acquisition: √(area ÷ the frame's area).
+  EXPECT_NEAR(r.raw_pose.depth, std::sqrt(r.features.area / (f.truth.cols * f.truth.rows)), 1e-9);
 }
 
 TEST(SilhouetteModel, TheSameAnswerAtAnyWorkScale) {

@@ -113,6 +113,62 @@ def check_pointer(script):
     clicks = [e for e in events if e[:2] == ['EV_KEY', 'BTN_LEFT']]
     assert [e[2] for e in clicks] == ['1', '0'], clicks  # one push: one press and release
     assert out.count('SYN_REPORT') == len(xs) + 2
+    check_pointer_drag(script)
+
+
+def drag_clip(path):
+    """A WebM file of an orange disc on grey that moves right, is pushed toward the camera and
+    held there while it moves on (a drag), comes back, then clicks once."""
+    import math
+    import gi
+    gi.require_version('Gst', '1.0')
+    from gi.repository import Gst
+    import numpy as np
+    Gst.init(None)
+    pipeline = Gst.parse_launch(
+        'appsrc name=src format=time caps=video/x-raw,format=RGB,width=320,height=240,'
+        'framerate=30/1 ! videoconvert ! vp8enc deadline=1 ! webmmux ! filesink '
+        f'location={path}')
+    src = pipeline.get_by_name('src')
+    pipeline.set_state(Gst.State.PLAYING)
+    rng = np.random.default_rng(3)
+    yy, xx = np.mgrid[0:240, 0:320]
+    for i in range(180):
+        t = i / 30
+        # forward at 1.5 s (+30 % over 0.2 s), held 1.4 s, back; a 0.3 s click at 4.5 s
+        held = min(max((t - 1.5) / 0.2, 0), 1) * (t < 3.1) + (3.1 <= t < 3.3) * (3.3 - t) / 0.2
+        scale = 1 + 0.3 * (1 - math.cos(math.pi * held)) / 2
+        if 4.5 < t < 4.8:
+            scale += 0.3 * (1 - math.cos(2 * math.pi * (t - 4.5) / 0.3)) / 2
+        cx, r = 90 + 30 * t, 30 * scale
+        img = rng.integers(100, 130, (240, 320, 3), dtype=np.uint8)
+        img[(xx - cx) ** 2 + (yy - 120) ** 2 <= r * r] = (230, 120, 30)
+        buf = Gst.Buffer.new_wrapped(img.tobytes())
+        buf.pts, buf.duration = i * Gst.SECOND // 30, Gst.SECOND // 30
+        src.emit('push-buffer', buf)
+    src.emit('end-of-stream')
+    pipeline.get_bus().timed_pop_filtered(60 * Gst.SECOND, Gst.MessageType.EOS |
+                                          Gst.MessageType.ERROR)
+    pipeline.set_state(Gst.State.NULL)
+
+
+def check_pointer_drag(script):
+    """The dry run on a clip with a drag and a click: the button goes down when the object is
+    pushed and held, stays down while the pointer moves, comes up when it is back; then one
+    click (down and up at once)."""
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        clip = os.path.join(tmp, 'drag.webm')
+        drag_clip(clip)
+        out = subprocess.run([script, '--dry-run', '--file', clip], capture_output=True,
+                             text=True, timeout=300, check=True).stdout
+    events = [line.split() for line in out.splitlines()]
+    button = [(i, e[2]) for i, e in enumerate(events) if e[:2] == ['EV_KEY', 'BTN_LEFT']]
+    assert [v for _, v in button] == ['1', '0', '1', '0'], button
+    (down, _), (up, _) = button[:2]
+    moved = [int(e[2]) for e in events[down:up] if e[:2] == ['EV_ABS', 'ABS_X']]
+    assert len(moved) > 20 and moved[-1] > moved[0] + 2000, moved  # dragged right while down
+    assert button[3][0] - button[2][0] == 2, button  # the click: down, SYN_REPORT, up
 
 
 

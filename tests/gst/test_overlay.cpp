@@ -130,7 +130,7 @@ TEST(Overlay, TextSaysTheStatusWhyAndThePointer) {
   TrackResult tracking = lost_result();
   tracking.status = TrackStatus::Ok;
   tracking.detail.clear();
-  tracking.push = true;
+  tracking.gesture = projtrack::Gesture::Push;
   const std::vector<std::string> t = overlay_text(tracking, Method::GridFilling);
   EXPECT_EQ(t[0], "TRACKING");
   EXPECT_EQ(t[2], "centroid 300, 260  area 4321 px");
@@ -231,7 +231,7 @@ Drawn draw(int w, int h, const TrackResult& r, const projtrack::Trace& trace, un
 // picture to it), the status's first line always, cut with "..." when it does not fit.
 TEST(Overlay, ThePanelTakesAtMostAQuarterOfTheFrame) {
   TrackResult r = lost_result();
-  r.push = true;
+  r.gesture = projtrack::Gesture::Push;
   r.detail =
       "the area passed 2.0x the last frame's: a leak, not filled; five refused frames in "
       "a row are tolerated, the sixth drops the track and acquisition starts again";
@@ -255,7 +255,7 @@ TEST(Overlay, ThePanelTakesAtMostAQuarterOfTheFrame) {
   EXPECT_EQ(small.lines[1], "PUSH");
   // A detail of a usual length at 1080p: everything, uncut.
   TrackResult usual = lost_result();
-  usual.push = true;
+  usual.gesture = projtrack::Gesture::Push;
   const projtrack::gst::PanelText large = panel_lines(usual, Method::GridFilling, 1920, 1080);
   EXPECT_EQ(joined(large.lines), joined(overlay_text(usual, Method::GridFilling)));
 }
