@@ -62,6 +62,12 @@ void AppearanceModel::learn(const ColorView& image, Point2i origin, const Mask& 
   rebuild();
 }
 
+namespace {
+
+constexpr double kEvidencePixels = 1000;
+
+}  // namespace
+
 void AppearanceModel::rebuild() {
   // Lighting moves a colour along luma more than along chroma: counts spread to the next luma
   // bin (by half), never across chroma, so a neutral and a reddish dark stay apart.
@@ -73,8 +79,10 @@ void AppearanceModel::rebuild() {
     return s;
   };
   // A colour seen a few times, or never, is no evidence of the object: a pseudo-count that
-  // grows slowly with the object's size keeps it low.
-  const double prior = 2.0 + 1e-4 * object_total_;
+  // grows slowly with the object's size keeps it low. "A few" is relative to the object: a small
+  // one (under kEvidencePixels, whole pixels: the work scale makes larger ones about 6 000) shows
+  // each of its colours only once or twice.
+  const double prior = 2.0 * std::min(1.0, object_total_ / kEvidencePixels) + 1e-4 * object_total_;
   for (int b = 0; b < bins; ++b) {
     const double o = smoothed(object_, b), s = smoothed(surroundings_, b);
     lut_[b] = static_cast<std::uint8_t>(std::lround(255.0 * o / (o + s + prior)));

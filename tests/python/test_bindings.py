@@ -111,7 +111,7 @@ class Tracking(unittest.TestCase):
         tracker.init(gray_frame(240, 60), (240, 60))
         r = tracker.track(gray_frame(240, 60))
         x, y, depth = r.pose
-        self.assertAlmostEqual(depth, 1, delta=0.05)
+        self.assertAlmostEqual(depth, (r.area / (W * H)) ** 0.5, delta=0.05)  # tracker.md
         self.assertAlmostEqual(x, 2 * (r.centroid[0] + 0.5) / W - 1, delta=1e-9)
         self.assertAlmostEqual(y, 2 * (r.centroid[1] + 0.5) / H - 1, delta=1e-9)
         self.assertEqual((r.raw_pose.x, r.raw_pose.y), (x, y))
