@@ -42,8 +42,8 @@ struct TrackerParams {
   AutoAcquisition strategy = AutoAcquisition::CompactMovingRegion;
   MotionDetector::Params motion{25, 4};
   double min_motion = 0.0005;  // share of the frame that must change before Auto looks
-  int candidates = 12;        // seeds CompactMovingRegion tries per frame
-  int min_acquired_side = 8;  // px: a region thinner than this is not acquired
+  int candidates = 12;         // seeds CompactMovingRegion tries per frame
+  int min_acquired_side = 8;   // px: a region thinner than this is not acquired
 
   // An estimate is refused (status Lost) when its area leaves [1/leak_factor, leak_factor] × the
   // last accepted one (a leak, or the inner point fell into a small region), exceeds

@@ -197,7 +197,7 @@ AfterRefusal after_refusal(const TrackerState& s, const TrackerParams& tp, bool 
   return out;
 }
 
-void drop_refused_track(TrackerState& s, const TrackerParams& tp) {
+void drop_refused_track(TrackerState& s) {
   // A track accepted on one frame only was never an object: its colours are not searched for.
   if (s.model() == ObjectModelKind::Appearance && s.track().accepted > 1)
     s.drop(TrackerState::Keep::Colours);

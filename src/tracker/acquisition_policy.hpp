@@ -68,6 +68,6 @@ struct AfterRefusal {
 AfterRefusal after_refusal(const TrackerState& s, const TrackerParams& tp, bool forced);
 // Ends a track refused for good: the appearance model keeps the object's colours to find it
 // again, unless the track held on one frame only; the edges model starts over.
-void drop_refused_track(TrackerState& s, const TrackerParams& tp);
+void drop_refused_track(TrackerState& s);
 
 }  // namespace projtrack

@@ -160,7 +160,7 @@ void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult
   state.refuse();
   const AfterRefusal next = after_refusal(state, tp, drop_now);
   r.detail += next.note;
-  if (next.drop) drop_refused_track(state, tp);
+  if (next.drop) drop_refused_track(state);
 }
 
 void Tracker::Impl::stopped(const Features& f, const TrackerParams& tp, TrackResult& r) {

@@ -4,9 +4,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "acquisition/motion_acquisition.hpp"
+#include "core/plausibility.hpp"
 #include "projtrack/estimator.hpp"
 #include "projtrack/work_budget.hpp"
-#include "core/plausibility.hpp"
 
 namespace projtrack {
 namespace {

@@ -130,8 +130,8 @@ TEST(NoSeed, AnObjectOfTheBordersColoursIsFoundWhereTheFrameMoves) {
     cv::rectangle(gray, {0, 228, 320, 12}, cv::Scalar(30), cv::FILLED);
     const int cx = 80 + 5 * i;
     cv::circle(gray, {cx, 120}, 20, cv::Scalar(30), cv::FILLED, cv::LINE_AA);
-    const TrackResult r = t.track(ImageView(gray.data, 320, 240, gray.step), EdgeParams{},
-                                  i / 25.0, Method::GapTolerantFilling, {}, {});
+    const TrackResult r = t.track(ImageView(gray.data, 320, 240, gray.step), EdgeParams{}, i / 25.0,
+                                  Method::GapTolerantFilling, {}, {});
     if (!has_features(r.status)) continue;
     found = i;
     EXPECT_NEAR(r.features.centroid.x, cx, 3);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "harness.hpp"
 #include "scene.hpp"
 #include "sequence.hpp"
 
@@ -32,20 +33,12 @@ std::string gesture_of(const GstStructure* s) {
   return g ? g : "";
 }
 
-class Gestures : public ::testing::Test {
+class Gestures : public projtrack::test::ProjtrackHarness {
  protected:
   void SetUp() override {
-    h_ = gst_harness_new("projtrack");
-    ASSERT_NE(h_, nullptr) << "is GST_PLUGIN_PATH set to the build's gst folder?";
-    bus_ = gst_bus_new();
-    gst_element_set_bus(h_->element, bus_);
+    ProjtrackHarness::SetUp();
     gst_harness_set_src_caps_str(h_,
                                  "video/x-raw,format=GRAY8,width=640,height=480,framerate=30/1");
-  }
-  void TearDown() override {
-    gst_harness_teardown(h_);
-    gst_bus_set_flushing(bus_, TRUE);
-    gst_object_unref(bus_);
   }
   // The sphere at (x, 240) scaled by `scale` as frame `i`: what the element reported.
   Frame push(int i, double x, double scale) {
@@ -68,9 +61,6 @@ class Gestures : public ::testing::Test {
     }
     return f;
   }
-
-  GstHarness* h_ = nullptr;
-  GstBus* bus_ = nullptr;
 };
 
 // Forward over 0.2 s from `start`, held `hold` s, back over 0.2 s: the sphere's extra scale.
@@ -98,9 +88,15 @@ TEST_F(Gestures, APressADragAReleaseThenAClickInTheMessageAndTheMeta) {
     EXPECT_EQ(f.meta_gesture, f.message_gesture) << "frame " << i;
     if (f.message_gesture.empty()) continue;
     said.push_back(f.message_gesture);
-    if (f.message_gesture == "press") EXPECT_NEAR(t, 1.7, 0.4);
-    if (f.message_gesture == "release") EXPECT_NEAR(t, 3.4, 0.3);
-    if (f.message_gesture == "push") EXPECT_NEAR(t, 4.35, 0.3);
+    if (f.message_gesture == "press") {
+      EXPECT_NEAR(t, 1.7, 0.4);
+    }
+    if (f.message_gesture == "release") {
+      EXPECT_NEAR(t, 3.4, 0.3);
+    }
+    if (f.message_gesture == "push") {
+      EXPECT_NEAR(t, 4.35, 0.3);
+    }
   }
   EXPECT_EQ(said, (std::vector<std::string>{"press", "release", "push"}));
 }

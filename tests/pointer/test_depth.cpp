@@ -78,7 +78,9 @@ TEST(Depth, TheSameHoweverAndWheneverTheTrackStarted) {
       if (i == s.frame) s.start(t);
       const Frame f = disc(40 + i);
       r = t.track(f.g(), f.e(), i / 30.0, Method::PixelFilling, {}, tp);
-      if (i == s.frame) EXPECT_TRUE(r.acquired) << s.what;
+      if (i == s.frame) {
+        EXPECT_TRUE(r.acquired) << s.what;
+      }
     }
     ASSERT_TRUE(has_features(r.status)) << s.what << ": " << r.detail;
     EXPECT_DOUBLE_EQ(r.raw_pose.depth, share_depth(r, 320, 240)) << s.what;
