@@ -29,7 +29,7 @@ GType gst_projtrack_edge_detector_get_type(void) {
       {static_cast<gint>(EdgeDetector::Canny), "Canny (hysteresis thresholds low/high)", "canny"},
       {static_cast<gint>(EdgeDetector::Sobel), "Sobel |Gx|+|Gy| >= low (thick edges)", "sobel"},
       {static_cast<gint>(EdgeDetector::Input),
-       "Input: the frame already is an edge map (non-zero luma = edge)", "input"},
+       "Input: the frame already is an edge map (luma above black = edge)", "input"},
       {0, nullptr, nullptr}};
   static const GType type = g_enum_register_static("GstProjtrackEdgeDetector", values);
   return type;
@@ -42,7 +42,9 @@ GType gst_projtrack_acquisition_get_type(void) {
       {static_cast<gint>(Acquisition::Center), "Center: track what is at the frame centre",
        "center"},
       {static_cast<gint>(Acquisition::Auto),
-       "Auto: the most compact closed region where the frame moves", "auto"},
+       "Auto: the object that moves (appearance: the moving region of colours apart from the "
+       "border's; edges: the most compact moving region)",
+       "auto"},
       {0, nullptr, nullptr}};
   static const GType type = g_enum_register_static("GstProjtrackAcquisition", values);
   return type;
