@@ -87,17 +87,31 @@ void SilhouetteModel::recentre(Mask& prior, int window) {
   }
 }
 
-void SilhouetteModel::learn(const Mask& object, const Mask& silhouette, double ring, double rate) {
+namespace {
+
+// How wide, in frame px, the band along an outline where the object's colours mix with what is
+// behind it: one chroma sample (chroma is sampled at half resolution), blur within it.
+constexpr int kMixedOutline = 2;
+
+}  // namespace
+
+void SilhouetteModel::learn(const Mask& object, const Mask& silhouette, double ring, double rate,
+                            bool past_outline) {
   // The ring starts at the silhouette's convex hull: what the silhouette missed in its
   // concavities (a print at its outline, a shadowed part) may be the object's and must not be
-  // learned as its surroundings.
+  // learned as its surroundings. Past a segmented silhouette's outline it starts beyond the band
+  // of mixed colours: learned as the surroundings, they would hold every next silhouette a band
+  // inside the last one (a small ball shrinks to its bright core). A first region from the
+  // finder keeps its outline's pixels in the ring: they are what the arm cut tells an arm by.
   const int width = at_least(ring, moments(silhouette).area, 3);
   ops_.convex_hull(silhouette, hull_);
-  embed(hull_, grown(silhouette.rect(), width) & work_.rect(), grown_);
+  const int gap = past_outline ? (kMixedOutline + scale_ - 1) / scale_ : 0;
+  embed(hull_, grown(silhouette.rect(), width + gap) & work_.rect(), ring_);
+  ops_.dilate(ring_, gap, grown_);
   ops_.dilate(grown_, width, ring_);
   for (int y = 0; y < ring_.rect().height; ++y) {
     std::uint8_t* r = ring_.row(y);
-    const std::uint8_t* s = grown_.row(y);
+    const std::uint8_t* s = grown_.row(y) + (ring_.rect().x - grown_.rect().x);
     for (int x = 0; x < ring_.rect().width; ++x) r[x] &= !s[x];
   }
   appearance_.learn(work_.view(), {work_.rect().x, work_.rect().y}, object, ring_, rate);
@@ -210,7 +224,7 @@ bool SilhouetteModel::start(const ColorView& frame, EdgeSource& edges, const Mas
   // finger across it. Without them (the border shows the object's colours too), against a ring
   // around the first silhouette.
   if (background.empty())
-    learn(core_, prior_, p.ring, 1.0);
+    learn(core_, prior_, p.ring, 1.0, false);
   else
     appearance_.learn(work_.view(), {work_.rect().x, work_.rect().y}, core_, background);
   score();
@@ -228,7 +242,7 @@ bool SilhouetteModel::start(const ColorView& frame, EdgeSource& edges, const Mas
     }
     if (round == 0) take_unknown_inside(seed, out);
     cut_arm(out, prior_, whole, seed, p);
-    learn(learning_core(out, p), out, p.ring, 1.0);
+    learn(learning_core(out, p), out, p.ring, 1.0, true);
     score();
     const bool grew = moments(out).area > 1.02 * m.area;
     embed(out, out.rect(), prior_);
@@ -322,7 +336,7 @@ void SilhouetteModel::accept(const Mask& s, const ObjectModelParams& p) {
     // As many frames' worth of learning at once: 1 - (1 - rate)^every.
     const double rate = 1 - std::pow(1 - std::clamp(p.learning_rate, 0.0, 1.0), every);
     ops_.erode(s, 1, core_);
-    learn(moments(core_).area > 0 ? core_ : s, s, p.ring, rate);
+    learn(moments(core_).area > 0 ? core_ : s, s, p.ring, rate, true);
     unlearned_ = 0;
   }
   embed(s, s.rect(), silhouette_);

@@ -66,8 +66,9 @@ class SilhouetteModel {
   // Moves `prior` onto the object-like pixels within `window` work px of its box.
   void recentre(Mask& prior, int window);
   // Learns the colours of `object` against a ring around the convex hull of `silhouette` (on this
-  // frame's work frame).
-  void learn(const Mask& object, const Mask& silhouette, double ring, double rate);
+  // frame's work frame); `past_outline`: the ring leaves out the band of mixed colours along it.
+  void learn(const Mask& object, const Mask& silhouette, double ring, double rate,
+             bool past_outline);
   // `first`: a first silhouette, which keeps every object-like piece within reach of the prior.
   bool segment(EdgeSource& edges, const Mask& prior, double area, Point2i hint, int reach,
                const ObjectModelParams& p, Mask& out, bool first = false);
