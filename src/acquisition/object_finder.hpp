@@ -107,6 +107,8 @@ class ObjectFinder {
   // The region of colours the border does not show at `seed` or nearest it (within a twentieth
   // of the frame), its holes filled; false when there is none. Needs foreground().
   bool nearest_apart_region(Point2i seed, const FinderParams& p, Mask& out);
+  // Whether `p` lies within the convex hull of `region` (enclosure_ its scratch).
+  bool around_point(const Mask& region, Point2i p);
   // from_seed(), and from_box() with `box` (work coordinates): the candidates kept within it.
   bool around_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
                    const Rect* box, Mask& out, std::string& why);

@@ -47,6 +47,14 @@ void ObjectFinder::clip_to(const Rect& box, Mask& m) {
   m.crop();
 }
 
+bool ObjectFinder::around_point(const Mask& region, Point2i p) {
+  // A point is an instruction: a region found beside it (the nearest one apart from the border,
+  // when the point's own colour is the border's) is not the object unless it is all around the
+  // point, within its convex hull (a print at the object's outline cuts a notch into it).
+  ops_.convex_hull(region, enclosure_);
+  return enclosure_.at(p);
+}
+
 bool ObjectFinder::around_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
                                const Rect* box, Mask& out, std::string& why) {
   load(frame, p, work_);
@@ -77,8 +85,9 @@ bool ObjectFinder::around_seed(const ColorView& frame, Point2i seed_pixel, const
   if (box) clip_to(*box, by_colour_);
   const bool by_colour =
       !apart || (box ? moments(by_colour_).area > moments(out).area
-                     : colour_separation(work_.view(), by_colour_, ops_, enclosure_) >
-                           colour_separation(work_.view(), out, ops_, enclosure_));
+                     : !around_point(out, seed) ||
+                           colour_separation(work_.view(), by_colour_, ops_, enclosure_) >
+                               colour_separation(work_.view(), out, ops_, enclosure_));
   if (by_colour) {
     out.swap(by_colour_);
     apart_from_border_ = false;

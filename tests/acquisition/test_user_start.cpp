@@ -118,6 +118,29 @@ TEST(UserStart, ASmallObjectThePointIsOnIsTracked) {
   }
 }
 
+// The point's colour is the border's (a dark puck; dark bands along the frame's edges), and a
+// grey patch the border does not show lies just beside the point. The patch stands further apart
+// from its surroundings than the puck (a light mark on it shows the table's colour), but the point
+// is on the puck: the puck is the object, not the region found beside the point.
+TEST(UserStart, ARegionBesideThePointIsNotTakenForTheObjectUnderIt) {
+  Tracker t;
+  t.seed({145, 184});
+  for (int i = 0; i < 10; ++i) {
+    cv::Mat gray(240, 320, CV_8U, cv::Scalar(200));
+    cv::rectangle(gray, {0, 0, 320, 12}, cv::Scalar(30), cv::FILLED);
+    cv::rectangle(gray, {0, 228, 320, 12}, cv::Scalar(30), cv::FILLED);
+    const int cx = 160 + i;
+    cv::rectangle(gray, {120, 160, 18, 48}, cv::Scalar(110), cv::FILLED);
+    cv::circle(gray, {cx, 184}, 20, cv::Scalar(30), cv::FILLED, cv::LINE_AA);
+    cv::circle(gray, {cx + 6, 184}, 8, cv::Scalar(200), cv::FILLED, cv::LINE_AA);
+    const TrackResult r = t.track(ImageView(gray.data, 320, 240, gray.step), EdgeParams{}, i / 25.0,
+                                  Method::GapTolerantFilling, {}, {});
+    ASSERT_TRUE(has_features(r.status)) << i << ": " << status_name(r.status) << " " << r.detail;
+    EXPECT_NEAR(r.features.centroid.x, cx, 3) << i;
+    EXPECT_NEAR(r.features.area / (M_PI * 20 * 20), 1.0, 0.2) << i;
+  }
+}
+
 // Without a seed: a dark puck sliding over a light table whose frame edges are as dark. No
 // region of colours the border does not show moves; the moving blob is found, and in it the
 // puck (it was never acquired: "no moving region of its own colours, wholly in view").
