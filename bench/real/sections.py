@@ -7,7 +7,7 @@ from motion import ONE_MOVER
 from report_kit import DASH, MISSING, TARGET, fmt_num, fmt_pct, fmt_res, fmt_x, missing
 from scoring import AREA_MAX, AREA_MIN, WITHIN
 from targets import (GOAL_AREA, GOAL_KEPT, GOAL_KEPT_THROWN, GOAL_MEDIAN, START_TEXT, STARTS,
-                     Summary, fmt_rel, worst)
+                     Summary, fmt_rel, kept_goal, worst)
 
 PEERS = ["cvtracker MOSSE", "cvtracker KCF", "cvtracker CSRT", "cvtracker MedianFlow", "CamShift"]
 
@@ -271,6 +271,42 @@ def cut_short(doc):
     w()
 
 
+def seeded_kept(res, entry):
+    """The kept share of every run started from a point or the box on an entry (None: missing)."""
+    names = [n for start in ("deepest", "quarter", "box") for n in res.start_runs(entry, start)]
+    scores = [res.score_of(entry, n) for n in names]
+    return [m["kept"] if m else None for m in scores]
+
+
+def plain_words(res):
+    """Per clip, computed: kept from every start on every variant, on the clip as decoded only,
+    from some starts, or from none."""
+    groups = {"every": [], "decoded": [], "some": [], "none": []}
+    for c in res.clips:
+        goal = kept_goal(clip_set.BY_NAME[c].thrown)
+        base = seeded_kept(res, c)
+        if not base or None in base:
+            groups["none"].append(f"{c} (not measured)")
+            continue
+        entries = res.entries_of(c)
+        every = all(k is not None and k >= goal for e in entries for k in seeded_kept(res, e))
+        if every:
+            groups["every"].append(c)
+        elif min(base) >= goal:
+            worst = min((e for e in entries if res.variant[e]),
+                        key=lambda e: min((k or 0) for k in seeded_kept(res, e)))
+            groups["decoded"].append(f"{c} (the worst variant: {res.variant[worst]})")
+        elif max(base) >= goal:
+            groups["some"].append(f"{c} ({sum(k >= goal for k in base)} of {len(base)} starts)")
+        else:
+            groups["none"].append(f"{c} (the best start keeps {fmt_pct(max(base))})")
+    text = {"every": "kept from every start, on the clip and every variant",
+            "decoded": "kept from every start on the clip as decoded, not on every variant",
+            "some": "kept from some starts on the clip as decoded",
+            "none": "kept from no start"}
+    return [f"- {text[g]}: {', '.join(cs) if cs else 'none'}" for g, cs in groups.items()]
+
+
 def summary(res):
     """The README's block: per start how many runs meet the targets and the worst, the other
     verdicts, and per clip what works."""
@@ -295,6 +331,9 @@ def summary(res):
             continue
         else:
             out.append(f"- {what}: {shown} (goal {goal}): {v.strip('*')}")
+    out += ["", "In plain words, from the user's point or box (kept: the share of in-view frames "
+            "in which the centroid and the area are right, the new measure):", ""]
+    out += plain_words(res)
     out += ["", "Kept (new measure) when clicked at the deepest point / from the true box / with "
             "no seed, on the clip as decoded (the range over its variants):", ""]
     for c in res.clips:
