@@ -47,10 +47,19 @@ void ObjectFinder::clip_to(const Rect& box, Mask& m) {
   m.crop();
 }
 
+namespace {
+
+// A region's colour separation from its ring (1 − the Bhattacharyya coefficient) above which its
+// colours are more unlike its surroundings' than like them.
+constexpr double kStandsApart = 0.5;
+
+}  // namespace
+
 bool ObjectFinder::around_point(const Mask& region, Point2i p) {
   // A point is an instruction: a region found beside it (the nearest one apart from the border,
-  // when the point's own colour is the border's) is not the object unless it is all around the
-  // point, within its convex hull (a print at the object's outline cuts a notch into it).
+  // when the point's own colour is the border's) may be something beside the object under the
+  // point; one around the point holds it within its convex hull (a print at the object's outline
+  // cuts a notch into it).
   ops_.convex_hull(region, enclosure_);
   return enclosure_.at(p);
 }
@@ -83,11 +92,16 @@ bool ObjectFinder::around_seed(const ColorView& frame, Point2i seed_pixel, const
     return apart;
   }
   if (box) clip_to(*box, by_colour_);
-  const bool by_colour =
-      !apart || (box ? moments(by_colour_).area > moments(out).area
-                     : !around_point(out, seed) ||
-                           colour_separation(work_.view(), by_colour_, ops_, enclosure_) >
-                               colour_separation(work_.view(), out, ops_, enclosure_));
+  bool by_colour = !apart || (box && moments(by_colour_).area > moments(out).area);
+  if (apart && !box) {
+    const double own = colour_separation(work_.view(), by_colour_, ops_, enclosure_);
+    // A region beside the point gives way to the point's own when that one stands apart from
+    // its surroundings (its colours more unlike its ring's than like them); one around the point
+    // to the one that stands further apart.
+    by_colour = around_point(out, seed)
+                    ? own > colour_separation(work_.view(), out, ops_, enclosure_)
+                    : own > kStandsApart;
+  }
   if (by_colour) {
     out.swap(by_colour_);
     apart_from_border_ = false;

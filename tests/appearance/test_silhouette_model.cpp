@@ -283,11 +283,10 @@ int tracked_in_dim_light(double light, const TrackerParams& tp) {
 TEST(SilhouetteModel, InADimRoomColoursAreReadAsInGoodLight) {
   // At 30 % of the light the brown object and the skin of the hand fall into the same colour
   // bins; read stretched to a normal exposure they are apart again.
+  // (Read as seen, the start now finds the object by the point's own region, which stands apart
+  // from its ring even in the dim colours: the stretch itself is tested in test_exposure.)
   EXPECT_EQ(tracked_in_dim_light(1.0, {}), 20);
   EXPECT_EQ(tracked_in_dim_light(0.3, {}), 20);
-  TrackerParams as_seen;
-  as_seen.dim_white = 0;
-  EXPECT_LT(tracked_in_dim_light(0.3, as_seen), 10);
 }
 
 TEST(SilhouetteModel, NoSeedNeverStartsOnASilhouetteThatRunsIntoTheFrameBorder) {
