@@ -15,7 +15,7 @@ inline constexpr Method kDefaultMethod = Method::GapTolerantFilling;
 // Which frames post a projtrack message (as facedetect's `updates`).
 enum class Updates {
   EveryFrame,  // every frame
-  OnChange,    // when the status changes, an object is acquired, or a gesture (push, press, release) is found
+  OnChange,    // the status changes, an object is acquired, or a gesture is found
   None,        // never
 };
 
