@@ -181,7 +181,7 @@ GstBuffer* make_buffer(Layout& l, const Bytes& bytes) {
 
 Bytes bytes_of(GstBuffer* buf) {
   Bytes b(gst_buffer_get_size(buf));
-  gst_buffer_extract(buf, 0, b.data(), b.size());
+  if (!b.empty()) gst_buffer_extract(buf, 0, b.data(), b.size());  // an empty one has no data
   return b;
 }
 
