@@ -106,12 +106,15 @@ void SilhouetteModel::learn(const Mask& object, const Mask& silhouette, double r
   const int width = at_least(ring, moments(silhouette).area, 3);
   ops_.convex_hull(silhouette, hull_);
   const int gap = past_outline ? (kMixedOutline + scale_ - 1) / scale_ : 0;
-  embed(hull_, grown(silhouette.rect(), width + gap) & work_.rect(), ring_);
-  ops_.dilate(ring_, gap, grown_);
+  embed(hull_, grown(silhouette.rect(), width + gap) & work_.rect(), grown_);
+  if (gap > 0) {
+    ops_.dilate(grown_, gap, hull_);
+    grown_.swap(hull_);
+  }
   ops_.dilate(grown_, width, ring_);
   for (int y = 0; y < ring_.rect().height; ++y) {
     std::uint8_t* r = ring_.row(y);
-    const std::uint8_t* s = grown_.row(y) + (ring_.rect().x - grown_.rect().x);
+    const std::uint8_t* s = grown_.row(y);
     for (int x = 0; x < ring_.rect().width; ++x) r[x] &= !s[x];
   }
   appearance_.learn(work_.view(), {work_.rect().x, work_.rect().y}, object, ring_, rate);
