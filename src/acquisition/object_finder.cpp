@@ -314,8 +314,8 @@ bool ObjectFinder::from_moving_blob(const ColorView& frame, const MotionDetector
   // The moving blob is a box around the object and where it was: the object is found in it as
   // in a user's box, by its colours.
   const Rect frame_box = to_frame(box, s, frame.luma.width, frame.luma.height);
-  if (!around_seed(frame, {frame_box.x + frame_box.width / 2, frame_box.y + frame_box.height / 2},
-                   p, &box, out, why) ||
+  if (!around_seed({frame_box.x + frame_box.width / 2, frame_box.y + frame_box.height / 2}, p, &box,
+                   out, why) ||
       moments(out).area < 0.2 * box.width * box.height) {
     why = "what moves there has no colours of its own";
     return false;

@@ -110,8 +110,9 @@ class ObjectFinder {
   // Whether `p` lies within the convex hull of `region` (enclosure_ its scratch).
   bool around_point(const Mask& region, Point2i p);
   // from_seed(), and from_box() with `box` (work coordinates): the candidates kept within it.
-  bool around_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
-                   const Rect* box, Mask& out, std::string& why);
+  // On the work frame load() made of this frame.
+  bool around_seed(Point2i seed_pixel, const FinderParams& p, const Rect* box, Mask& out,
+                   std::string& why);
   static void clip_to(const Rect& box, Mask& m);
   // Whether `m` (work coordinates) moves as moves() asks of a labelled region: by its area, or
   // along its outline.

@@ -64,9 +64,8 @@ bool ObjectFinder::around_point(const Mask& region, Point2i p) {
   return enclosure_.at(p);
 }
 
-bool ObjectFinder::around_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
-                               const Rect* box, Mask& out, std::string& why) {
-  load(frame, p, work_);
+bool ObjectFinder::around_seed(Point2i seed_pixel, const FinderParams& p, const Rect* box,
+                               Mask& out, std::string& why) {
   foreground(p);
   const int w = candidates_.rect().width, h = candidates_.rect().height, s = work_.scale();
   const Point2i seed{seed_pixel.x / std::max(1, s), seed_pixel.y / std::max(1, s)};
@@ -111,7 +110,8 @@ bool ObjectFinder::around_seed(const ColorView& frame, Point2i seed_pixel, const
 
 bool ObjectFinder::from_seed(const ColorView& frame, Point2i seed_pixel, const FinderParams& p,
                              Mask& out, std::string& why) {
-  return around_seed(frame, seed_pixel, p, nullptr, out, why);
+  load(frame, p, work_);
+  return around_seed(seed_pixel, p, nullptr, out, why);
 }
 
 bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const FinderParams& p,
@@ -121,15 +121,13 @@ bool ObjectFinder::from_box(const ColorView& frame, const Rect& box, const Finde
     why = "the box lies outside the frame";
     return false;
   }
-  const int s = std::max(
-      1, work_scale(static_cast<double>(frame.luma.width) * frame.luma.height, p.work_pixels));
-  const Rect wb = to_work(b, s);
+  load(frame, p, work_);
+  const Rect wb = to_work(b, work_.scale());
   const Point2i centre{b.x + b.width / 2, b.y + b.height / 2};
-  if (around_seed(frame, centre, p, &wb, out, why) && !out.empty() &&
+  if (around_seed(centre, p, &wb, out, why) && !out.empty() &&
       moments(out).area >= 0.2 * wb.width * wb.height)
     return true;
   // Nothing of its own colours fills the box: the user's box is the object's outline.
-  load(frame, p, work_);
   apart_from_border_ = true;  // its colours are learned against the border's (the box may be all)
   out.reset(wb & work_.rect());
   const double cx = wb.x + wb.width / 2.0 - 0.5, cy = wb.y + wb.height / 2.0 - 0.5;

@@ -54,7 +54,6 @@ void SeedRegion::distances(const ColorView& f, Point2i seed) {
 
 void SeedRegion::bottlenecks(int w, int h, Point2i seed) {
   bottleneck_.assign(static_cast<std::size_t>(w) * h, kLevels);  // kLevels: not reached yet
-  done_.assign(bottleneck_.size(), 0);
   buckets_.resize(kLevels);
   for (auto& b : buckets_) b.clear();
   const std::int32_t s = seed.y * w + seed.x;
@@ -65,13 +64,12 @@ void SeedRegion::bottlenecks(int w, int h, Point2i seed) {
     while (!bucket.empty()) {  // the bucket may grow while it is emptied (the same level)
       const std::int32_t p = bucket.back();
       bucket.pop_back();
-      if (done_[p]) continue;
-      done_[p] = 1;
+      if (bottleneck_[p] != level) continue;  // taken at a lower level already
       const int x = p % w, y = p / w;
       const std::int32_t near[4] = {x > 0 ? p - 1 : -1, x + 1 < w ? p + 1 : -1, y > 0 ? p - w : -1,
                                     y + 1 < h ? p + w : -1};
       for (std::int32_t q : near) {
-        if (q < 0 || done_[q]) continue;
+        if (q < 0) continue;
         const int b = std::max<int>(level, distance_[q]);
         if (b < bottleneck_[q]) {
           bottleneck_[q] = static_cast<std::uint16_t>(b);
@@ -83,8 +81,8 @@ void SeedRegion::bottlenecks(int w, int h, Point2i seed) {
 }
 
 int SeedRegion::most_stable(int w, int h, double least, double most) const {
-  std::vector<std::int64_t> area(kLevels + 1, 0);
-  std::vector<std::uint8_t> sides(kLevels + 1, 0);
+  std::array<std::int64_t, kLevels + 1> area{};
+  std::array<std::uint8_t, kLevels + 1> sides{};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const int b = bottleneck_[static_cast<std::size_t>(y) * w + x];

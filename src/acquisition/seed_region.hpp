@@ -30,7 +30,7 @@ class SeedRegion {
   // The tolerance of the most stable region; -1 for none.
   int most_stable(int width, int height, double least, double most) const;
 
-  std::vector<std::uint8_t> distance_, done_;
+  std::vector<std::uint8_t> distance_;
   std::vector<std::uint16_t> bottleneck_;           // the tolerance each pixel joins at
   std::vector<std::vector<std::int32_t>> buckets_;  // pixels by tolerance (a bucket queue)
 };
