@@ -32,7 +32,9 @@ TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
   EdgeParams edge_params = s.edges;
   edge_params.input_black_level = st.black_level;
   const ColorView color = frame_color(frame, st.converted);
-  Trace* trace = s.draw ? &st.trace : nullptr;
+  // What the method did is recorded only when it is drawn (rays may number 131 072).
+  const bool traced = s.draw && (s.draw_flags & (kDrawGrid | kDrawOutline));
+  Trace* trace = traced ? &st.trace : nullptr;
   // Seconds for the smoothing and the push detector: the buffer's time, else the assumed rate.
   const GstClockTime pts = GST_BUFFER_PTS(frame->buffer);
   const double t = GST_CLOCK_TIME_IS_VALID(pts)
@@ -47,7 +49,7 @@ TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
   if (s.alpha_mask && has_alpha(GST_VIDEO_FRAME_FORMAT(frame))) write_alpha(frame, silhouette);
   if (s.draw) {
     draw_overlay(frame, s.method, r, st.trace, s.draw_flags);
-    if (st.trace.rays_not_recorded)
+    if (traced && st.trace.rays_not_recorded)
       GST_LOG_OBJECT(self, "overlay: %zu rays not recorded", st.trace.rays_not_recorded);
   }
   return r;
