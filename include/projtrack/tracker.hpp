@@ -85,9 +85,10 @@ class Tracker {
   // empty with the edges model, or without a track). A view into the tracker.
   SilhouetteMask silhouette() const;
   // The frames change size, from width × height to new_width × new_height (a new resolution):
-  // the inner point, the user's box, the last estimate and the pointer's reference area are
-  // scaled, and the appearance model finds the object again within its scaled box on the next
-  // frame, learning its colours anew there. The track goes on: no new acquisition, depth goes on.
+  // the inner point, the user's box and the last estimate are scaled (depth, the object's share
+  // of the frame, needs no scaling), and the appearance model finds the object again within its
+  // scaled box on the next frame, learning its colours anew there. The track goes on: no new
+  // acquisition, depth goes on.
   void rescale(int width, int height, int new_width, int new_height);
   // The frames' colours are read another way (another pixel format, same size): the appearance
   // model learns the object's colours anew within its last box on the next frame (those learned

@@ -170,20 +170,19 @@ void SilhouetteModel::cut_arm(Mask& s, const Mask& before, const Rect& frame, Po
   // by the frame's edge was there before, an arm that grew along the hand was not.
   const std::size_t n = static_cast<std::size_t>(pieces_.count()) + 1;
   arm_.assign(n, 0);
-  piece_size_.assign(n, 0);
   piece_before_.assign(n, 0);
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
       const std::int32_t l = pieces_.row(y)[x];
       if (!l) continue;
       const int fx = x + g.x, fy = y + g.y;
-      ++piece_size_[l];
       piece_before_[l] += before.at({fx, fy});
       if (l != seed_piece &&
           (fx <= frame.x || fy <= frame.y || fx >= frame.right() - 1 || fy >= frame.bottom() - 1))
         arm_[static_cast<std::size_t>(l)] = 1;
     }
-  for (std::size_t l = 1; l < n; ++l) arm_[l] = arm_[l] && 2 * piece_before_[l] < piece_size_[l];
+  for (std::size_t l = 1; l < n; ++l)
+    arm_[l] = arm_[l] && 2 * piece_before_[l] < pieces_.size(static_cast<int>(l));
   for (int y = 0; y < g.height; ++y) {
     std::uint8_t* o = grown_.row(y);
     for (int x = 0; x < g.width; ++x)

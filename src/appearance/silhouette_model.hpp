@@ -81,9 +81,9 @@ class SilhouetteModel {
   WorkFrame work_;
   EdgeMap edge_map_;
   MaskOps ops_;
-  RegionLabels pieces_;            // cut_arm(): the pieces left by the opening
-  std::vector<std::uint8_t> arm_;  // per piece: it is the arm (cut_arm)
-  std::vector<std::int64_t> piece_size_, piece_before_;  // per piece: its pixels, those in before
+  RegionLabels pieces_;                     // cut_arm(): the pieces left by the opening
+  std::vector<std::uint8_t> arm_;           // per piece: it is the arm (cut_arm)
+  std::vector<std::int64_t> piece_before_;  // per piece: its pixels in before
   int scale_ = 1;
   int unlearned_ = 0;  // accepted frames since the model last learned
   // What of a first silhouette `s` the start learns the colours from (in core_ or `s` itself):

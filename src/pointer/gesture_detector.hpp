@@ -26,7 +26,6 @@ class GestureDetector {
   // The track starts afresh (a new object, or the object found again after a loss): everything
   // is forgotten. Returns Gesture::Release when a press was held, else Gesture::None.
   Gesture restart();
-  bool pressed() const { return state_ == State::Pressed; }
 
  private:
   enum class State { Rest, Rising, Forward, Pressed, Returning };

@@ -76,8 +76,8 @@ class TrackerState {
   void forget_still() { track_.still = 0; }
   // The colours of an object lost long ago: acquisition looks for any object again.
   void forget_colours();
-  // The frames are now sx × sy times as large: the track's points, boxes and areas, and the
-  // pointer's reference area, follow; the object is found again within its box (relearn()).
+  // The frames are now sx × sy times as large: the track's points, boxes and areas follow; the
+  // object is found again within its box (relearn()).
   void rescale(double sx, double sy);
   // The frames' colours are read another way: the object model forgets its colours and silhouette
   // and starts again within the last box on the next frame; the track (its last estimate, its
