@@ -61,7 +61,7 @@ static inline gboolean gst_projtrack_features_read(const GstStructure* s, GstPro
   f->status = gst_structure_get_string(s, "status");
   f->element = gst_structure_get_string(s, "element");
   f->method = gst_structure_get_string(s, "method");
-  f->push = gst_structure_has_field(s, "gesture");
+  f->push = g_strcmp0(gst_structure_get_string(s, "gesture"), "push") == 0;
   return f->status && f->element && f->method &&
          gst_structure_get(s, "track-id", G_TYPE_INT, &f->track_id, "frame-width", G_TYPE_INT,
                            &f->frame_width, "frame-height", G_TYPE_INT, &f->frame_height,
