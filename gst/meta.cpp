@@ -71,10 +71,12 @@ void scale_outline(GstStructure* s, double sx, double sy, int w, int h) {
 gboolean transform(GstBuffer* dest, GstCustomMeta* meta, GstBuffer*, GQuark type, gpointer data,
                    gpointer) {
   const GstStructure* features = gst_custom_meta_get_structure(meta);
-  GstStructure* out = nullptr;
   if (GST_META_TRANSFORM_IS_COPY(type)) {
-    out = gst_structure_copy(features);
-  } else if (GST_VIDEO_META_TRANSFORM_IS_SCALE(type)) {
+    add_projtrack_meta(dest, features);
+    return TRUE;
+  }
+  GstStructure* out = nullptr;
+  if (GST_VIDEO_META_TRANSFORM_IS_SCALE(type)) {
     const auto* t = static_cast<const GstVideoMetaTransform*>(data);
     out = scaled_features(features, GST_VIDEO_INFO_WIDTH(t->in_info),
                           GST_VIDEO_INFO_HEIGHT(t->in_info), GST_VIDEO_INFO_WIDTH(t->out_info),
@@ -85,6 +87,7 @@ gboolean transform(GstBuffer* dest, GstCustomMeta* meta, GstBuffer*, GQuark type
     return FALSE;
   }
   add_projtrack_meta(dest, out);
+  gst_structure_free(out);
   return TRUE;
 }
 
@@ -104,7 +107,7 @@ const GstMetaInfo* projtrack_meta_info() {
   return info;
 }
 
-void add_projtrack_meta(GstBuffer* buffer, GstStructure* features) {
+void add_projtrack_meta(GstBuffer* buffer, const GstStructure* features) {
   projtrack_meta_info();
   GstCustomMeta* meta = gst_buffer_add_custom_meta(buffer, GST_PROJTRACK_META_NAME);
   if (meta) {
@@ -117,7 +120,6 @@ void add_projtrack_meta(GstBuffer* buffer, GstStructure* features) {
         },
         s);
   }
-  gst_structure_free(features);
 }
 
 GstStructure* scaled_features(const GstStructure* features, int in_width, int in_height,

@@ -10,8 +10,8 @@ namespace projtrack::gst {
 // Registers the meta (once, from any thread) and returns its info.
 const GstMetaInfo* projtrack_meta_info();
 
-// Adds a GstProjtrackMeta holding the fields of `features` (taken) to `buffer` (writable).
-void add_projtrack_meta(GstBuffer* buffer, GstStructure* features);
+// Adds a GstProjtrackMeta holding a copy of the fields of `features` to `buffer` (writable).
+void add_projtrack_meta(GstBuffer* buffer, const GstStructure* features);
 
 // `features` (a frame of in_width × in_height) in a frame of out_width × out_height, as if the
 // picture were scaled: positions and the box follow the pixels, the area grows with the frame's,

@@ -76,8 +76,8 @@ void attach_meta(GstBuffer* buffer, const FrameReport& report) {
   GstStructure* features = result_structure(report);
   // The ROI meta's parameters do not survive videoscale in GStreamer 1.22 (its transform drops
   // them): GstProjtrackMeta carries the same fields through.
-  gst_video_region_of_interest_meta_add_param(roi, gst_structure_copy(features));
   add_projtrack_meta(buffer, features);
+  gst_video_region_of_interest_meta_add_param(roi, features);
 }
 
 GstMessage* result_message(GstProjtrack* self, GstBuffer* buffer, const FrameReport& report,
