@@ -58,6 +58,10 @@ GType gst_projtrack_object_model_get_type(void) {
        "Appearance: the whole object's silhouette from its colours, its edges and its motion; "
        "the estimator runs on its outline",
        "appearance"},
+      {static_cast<gint>(ObjectModelKind::Flow),
+       "Flow: the whole object carried along the picture's motion and cut from its surroundings "
+       "by colour and motion; the estimator runs on its outline",
+       "flow"},
       {0, nullptr, nullptr}};
   static const GType type = g_enum_register_static("GstProjtrackObjectModel", values);
   return type;

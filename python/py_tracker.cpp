@@ -1,5 +1,7 @@
 #include "py_tracker.hpp"
 
+#include <pybind11/numpy.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -63,11 +65,33 @@ Rect parse_box(const std::vector<double>& v, int width, int height) {
   return in;
 }
 
+bool is_mask(const Where& where) {
+  if (where.kind == Where::Mask) return true;
+  return where.kind == Where::Either && py::isinstance<py::array>(where.obj) &&
+         py::reinterpret_borrow<py::array>(where.obj).ndim() == 2;
+}
+
+// The mask `obj` as the object's silhouette on a width × height frame: a ValueError for another
+// shape or a mask with no pixel set. Any numeric dtype; non-zero is the object.
+void seed_mask(Tracker& tracker, const py::handle& obj, int width, int height) {
+  const auto m = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(
+      py::reinterpret_borrow<py::object>(obj));
+  if (!m || m.ndim() != 2 || m.shape(0) != height || m.shape(1) != width)
+    throw py::value_error("mask: an (H, W) = (" + std::to_string(height) + ", " +
+                          std::to_string(width) + ") array expected, non-zero on the object");
+  if (!tracker.seed_mask(ImageView(m.data(), width, height, width)))
+    throw py::value_error("mask: no pixel is set (non-zero): there is no object in it");
+}
+
 // The seed `where` gives in a width × height frame: a ValueError for a point outside it, a box
-// without area or outside it, or another count of numbers; a TypeError for what are not numbers.
-// A box is clipped to the frame.
+// without area or outside it, a mask of another shape or empty, or another count of numbers; a
+// TypeError for what are not numbers. A box is clipped to the frame.
 void seed(Tracker& tracker, const Where& where, int width, int height) {
   if (where.kind == Where::Nowhere) return;
+  if (is_mask(where)) {
+    seed_mask(tracker, where.obj, width, height);
+    return;
+  }
   const char* what = where.kind == Where::Point ? "point"
                      : where.kind == Where::Box ? "box"
                                                 : "point or box";

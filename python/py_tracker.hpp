@@ -16,9 +16,10 @@
 namespace projtrack::python {
 
 // Where init() or track() starts a new object: `obj` read as an inner point (x, y), a box
-// (x, y, width, height) or, for Either, whichever its count of numbers says.
+// (x, y, width, height), a mask ((H, W) array, non-zero on the object) or, for Either, whichever
+// it is (a 2-D array: a mask; else by its count of numbers).
 struct Where {
-  enum Kind { Nowhere, Point, Box, Either };
+  enum Kind { Nowhere, Point, Box, Mask, Either };
   pybind11::handle obj;
   Kind kind = Nowhere;
   bool restart = false;  // init(): the frames' time starts over at 0 too

@@ -10,7 +10,15 @@ namespace projtrack::python {
 namespace py = pybind11;
 
 const char* model_name(ObjectModelKind k) {
-  return k == ObjectModelKind::Edges ? "edges" : "appearance";
+  switch (k) {
+    case ObjectModelKind::Edges:
+      return "edges";
+    case ObjectModelKind::Flow:
+      return "flow";
+    case ObjectModelKind::Appearance:
+      break;
+  }
+  return "appearance";
 }
 
 const char* acquisition_name(Acquisition a) {
@@ -52,8 +60,9 @@ Settings make_settings(const Options& o) {
   if (!method) bad("method '" + o.method + "' is none of: " + method_names());
   s.method = *method;
   const std::optional<ObjectModelKind> model =
-      by_name(o.model, {ObjectModelKind::Appearance, ObjectModelKind::Edges}, model_name);
-  if (!model) bad("model '" + o.model + "' is neither 'appearance' nor 'edges'");
+      by_name(o.model, {ObjectModelKind::Appearance, ObjectModelKind::Edges, ObjectModelKind::Flow},
+              model_name);
+  if (!model) bad("model '" + o.model + "' is none of: appearance, edges, flow");
   s.tracker.model = *model;
   const std::optional<Acquisition> acquisition =
       by_name(o.acquisition, {Acquisition::Manual, Acquisition::Center, Acquisition::Auto},

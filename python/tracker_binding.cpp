@@ -15,7 +15,9 @@ constexpr const char* kClassDoc =
     "A tracker of one object in a sequence of numpy frames (gray (H, W) or BGR (H, W, 3) "
     "uint8).\n\n"
     "Settings (keywords only): method (projtrack.methods()), model ('appearance': the object's\n"
-    "silhouette from its colours and edges; 'edges': the paper's tracker on edges alone),\n"
+    "silhouette from its colours and edges; 'flow': the whole object carried along the\n"
+    "picture's motion and cut from its surroundings; 'edges': the paper's tracker on edges "
+    "alone),\n"
     "acquisition ('manual': wait for init() or a point; 'center'; 'auto': the moving object),\n"
     "the estimators' rays, recursion, block_size, grid_size, max_iterations, convergence,\n"
     "seed_radius and max_gap, the edges' edge_low, edge_high and blur, smoothing (of the pose),\n"
@@ -75,7 +77,8 @@ void bind_tracker(py::module_& m) {
            py::arg("fps") = o.fps)
       .def("init", &PyTracker::init, py::arg("frame"), py::arg("where"),
            "Starts a new object on `frame`: `where` is a box (x, y, w, h) around it, as OpenCV's\n"
-           "trackers take, or a point (x, y) inside it. True when the object was measured on\n"
+           "trackers take, a point (x, y) inside it, or a mask: an (H, W) array, non-zero on it. "
+           "True when the object was measured on\n"
            "this frame (else the tracker goes on trying from there for a few frames).")
       .def("update", &PyTracker::update, py::arg("frame"),
            "(ok, (x, y, w, h)), as OpenCV's trackers: ok when the object was measured on this\n"
@@ -83,19 +86,26 @@ void bind_tracker(py::module_& m) {
       .def(
           "track",
           [](PyTracker& t, const py::handle& frame, const py::object& point, const py::object& box,
-             const py::object& time, bool mask) {
-            if (!point.is_none() && !box.is_none())
-              throw py::value_error("give a point or a box, not both");
-            const Where where{
-                point.is_none() ? box : point,
-                point.is_none() ? (box.is_none() ? Where::Nowhere : Where::Box) : Where::Point};
-            return t.track(frame, where, time, mask);
+             const py::object& time, const py::object& mask) {
+            // `mask`: True or False draws the result's mask or not; an array starts from it.
+            const bool start_mask = !py::isinstance<py::bool_>(mask);
+            if (!point.is_none() + !box.is_none() + start_mask > 1)
+              throw py::value_error("give one of a point, a box or a mask array, not several");
+            const Where where{start_mask        ? mask
+                              : point.is_none() ? box
+                                                : point,
+                              start_mask         ? Where::Mask
+                              : !point.is_none() ? Where::Point
+                              : !box.is_none()   ? Where::Box
+                                                 : Where::Nowhere};
+            return t.track(frame, where, time, start_mask || mask.cast<bool>());
           },
           py::arg("frame"), py::kw_only(), py::arg("point") = py::none(),
-          py::arg("box") = py::none(), py::arg("t") = py::none(), py::arg("mask") = true,
+          py::arg("box") = py::none(), py::arg("t") = py::none(), py::arg("mask") = py::bool_(true),
           "The Result of one frame. With `point` (x, y) or `box` (x, y, w, h), a new object\n"
           "from there on this frame. `t`: the frame's time in seconds (default: frames counted\n"
-          "at fps). `mask`: whether to draw the silhouette's mask (Result.mask).")
+          "at fps). `mask`: whether to draw the silhouette's mask (Result.mask), or an (H, W)\n"
+          "array non-zero on the object: a new object from that silhouette on this frame.")
       .def("reset", &PyTracker::reset, "Forgets the object (and restarts the frames' time).")
       .def_property_readonly("settings", &settings_dict, "The tracker's settings, as a dict.")
       .def_property_readonly("frames", &PyTracker::frames, "Frames tracked since the start.")

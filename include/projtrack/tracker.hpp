@@ -66,6 +66,11 @@ class Tracker {
   // Tracks the object in `box` (a user's rectangle around it) on the next frame: its centre is
   // the inner point; the appearance model takes the object's first silhouette within the box.
   void seed_box(const Rect& box);
+  // Tracks the object `mask` covers (non-zero on it, the frame's size: OpenCV's convention) on
+  // the next frame: the flow model starts from exactly that silhouette; the others from its box,
+  // with its deepest point as the inner point. False, changing nothing, when the mask holds no
+  // pixel or has no usable shape (no data, stride < width).
+  bool seed_mask(const ImageView& mask);
   // Forgets the object; Auto and Center acquisition start over.
   void reset();
   // Where the inner point is now (also TrackResult::inner_point of the last frame).

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "finder_params.hpp"
+#include "flow_model_params.hpp"
 #include "gesture.hpp"
 #include "motion_detector.hpp"
 #include "object_model_params.hpp"
@@ -34,6 +35,10 @@ enum class ObjectModelKind {
   // surroundings', the edges and its last silhouette moved by its motion; the estimator runs on
   // that silhouette's outline (docs/tracker.md).
   Appearance,
+  // The whole object as it moves: its last silhouette carried along the picture's dense motion
+  // (optical flow), then cut from its surroundings where the colours of both and the motion of
+  // both agree; the estimator runs on that silhouette (docs/tracker.md, "The flow model").
+  Flow,
 };
 
 struct TrackerParams {
@@ -67,6 +72,8 @@ struct TrackerParams {
   // Appearance model: how it finds, segments and learns the object.
   ObjectModelParams object;
   FinderParams finder;
+  // Flow model: how it carries and cuts the object.
+  FlowModelParams flow;
   // The grey-level thresholds of motion (MotionDetector::Params::threshold) and of the
   // background (FinderParams::background_change) hold for a scene whose luma spans this many
   // levels (2nd to 98th percentile); in a dimmer one, whose changes are as much smaller, they

@@ -8,23 +8,28 @@
 
 namespace projtrack {
 
+ColorView Tracker::Impl::as_appearance_reads(const ColorView& raw, const TrackerParams& tp) {
+  if (!state.object.knows_colours())
+    state.exposure = exposure_for(luma_range(raw.luma), tp.dim_white, tp.full_contrast);
+  ColorView frame = raw;
+  frame.exposure = state.exposure;
+  return frame;
+}
+
 TrackResult Tracker::Impl::track_appearance(const ColorView& raw, EdgeSource& edges,
                                             const FrameInput& in) {
   // The frame as the appearance model reads it: a dim one stretched to a normal exposure. The
   // model's colours are learned under it, so it is measured only while no object is known and
   // held while one is: the frame's range changes with what moves through it (a bright object
   // that leaves a dim room), and the model follows slow changes of the light by itself.
-  if (!state.object.knows_colours())
-    state.exposure = exposure_for(luma_range(raw.luma), in.tp.dim_white, in.tp.full_contrast);
-  ColorView frame = raw;
-  frame.exposure = state.exposure;
+  const ColorView frame = as_appearance_reads(raw, in.tp);
   return state.object.tracking() ? follow_appearance(frame, edges, in)
                                  : start_appearance(frame, edges, in);
 }
 
-Features Tracker::Impl::estimate_silhouette(const ColorView& frame, const FrameInput& in) {
-  const SilhouetteView s{work.silhouette, state.object.scale(), frame.luma.width,
-                         frame.luma.height};
+Features Tracker::Impl::estimate_silhouette(const ColorView& frame, int scale,
+                                            const FrameInput& in) {
+  const SilhouetteView s{work.silhouette, scale, frame.luma.width, frame.luma.height};
   return estimate_on_silhouette(s, state.track().inner, work.estimator(in.method), in.method,
                                 in.params, work.budget, work.on_silhouette, in.trace);
 }
@@ -42,7 +47,7 @@ TrackResult Tracker::Impl::start_appearance(const ColorView& frame, EdgeSource& 
   AppearanceStart start =
       start_appearance_track(state, frame, edges, in.tp, work.first, work.silhouette);
   if (start.found) {
-    const Features f = estimate_silhouette(frame, in);
+    const Features f = estimate_silhouette(frame, state.object.scale(), in);
     if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
       state.object.forget_position();
       stopped(f, in.tp, r);
@@ -80,7 +85,7 @@ TrackResult Tracker::Impl::follow_appearance(const ColorView& frame, EdgeSource&
       refuse("nothing of the object's colours is left where it was", in.tp, r);
     return r;
   }
-  const Features f = estimate_silhouette(frame, in);
+  const Features f = estimate_silhouette(frame, state.object.scale(), in);
   if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
     stopped(f, in.tp, r);
     return r;

@@ -6,20 +6,36 @@
 
 namespace projtrack {
 
+namespace {
+
+// `s` at full resolution into a mask of its frame's size (already cleared); false when empty.
+bool draw(const SilhouetteMask& s, std::uint8_t* mask, std::ptrdiff_t stride) {
+  if (s.empty()) return false;
+  const Rect r = to_frame(s.rect, s.scale, s.frame_width, s.frame_height);
+  for (int y = r.y; y < r.bottom(); ++y) {
+    const std::uint8_t* in = s.mask.row(y / s.scale - s.rect.y);
+    std::uint8_t* out = mask + y * stride;
+    for (int x = r.x; x < r.right(); ++x) out[x] = in[x / s.scale - s.rect.x] ? 255 : 0;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool Tracker::silhouette(std::uint8_t* mask, int width, int height, std::ptrdiff_t stride) const {
   if (mask == nullptr || width <= 0 || height <= 0 || stride < width) return false;
   for (int y = 0; y < height; ++y) std::memset(mask + y * stride, 0, width);
-  const SilhouetteModel& object = impl_->state.object;
-  if (impl_->state.model() != ObjectModelKind::Appearance || !object.tracking()) return false;
-  const Mask& m = object.silhouette();
-  const int s = object.scale();
-  const Rect r = to_frame(m.rect(), s, width, height);
-  for (int y = r.y; y < r.bottom(); ++y) {
-    const std::uint8_t* in = m.row(y / s - m.rect().y);
-    std::uint8_t* out = mask + y * stride;
-    for (int x = r.x; x < r.right(); ++x) out[x] = in[x / s - m.rect().x] ? 255 : 0;
+  const TrackerState& state = impl_->state;
+  SilhouetteMask s;
+  if (state.model() == ObjectModelKind::Flow) {
+    s = silhouette();
+  } else if (state.model() == ObjectModelKind::Appearance && state.object.tracking()) {
+    const Mask& m = state.object.silhouette();
+    s = {m.view(), m.rect(), state.object.scale(), width, height};
   }
-  return true;
+  s.frame_width = width;  // the caller's mask bounds what is drawn
+  s.frame_height = height;
+  return draw(s, mask, stride);
 }
 
 }  // namespace projtrack

@@ -1,5 +1,6 @@
 #include "projtrack/tracker.hpp"
 
+#include <opencv2/imgproc.hpp>
 #include <utility>
 
 #include "core/plausibility.hpp"
@@ -22,6 +23,24 @@ Tracker& Tracker::operator=(Tracker&&) noexcept = default;
 void Tracker::seed(Point2i p) { impl_->state.seed(p); }
 void Tracker::seed_box(const Rect& box) { impl_->state.seed_box(box); }
 void Tracker::reset() { impl_->state.reset(); }
+
+bool Tracker::seed_mask(const ImageView& mask) {
+  if (mask.data == nullptr || mask.width <= 0 || mask.height <= 0 || mask.stride < mask.width)
+    return false;
+  cv::Mat inside;
+  cv::compare(cv::Mat(mask.height, mask.width, CV_8U, const_cast<std::uint8_t*>(mask.data),
+                      static_cast<std::size_t>(mask.stride)),
+              0, inside, cv::CMP_GT);
+  const cv::Rect b = cv::boundingRect(inside);
+  if (b.empty()) return false;
+  // The deepest point: the one farthest from the outline, well inside the object.
+  cv::Mat distance;
+  cv::distanceTransform(inside, distance, cv::DIST_L2, 3);
+  cv::Point deepest;
+  cv::minMaxLoc(distance, nullptr, nullptr, nullptr, &deepest);
+  impl_->state.seed_mask(inside, Rect{b.x, b.y, b.width, b.height}, {deepest.x, deepest.y});
+  return true;
+}
 const std::optional<Point2i>& Tracker::inner_point() const { return impl_->state.track().inner; }
 void Tracker::set_stop_flag(const std::atomic<bool>* stop) { impl_->stop = stop; }
 void Tracker::relearn() { impl_->state.relearn(); }
@@ -34,6 +53,12 @@ void Tracker::rescale(int width, int height, int new_width, int new_height) {
 
 SilhouetteMask Tracker::silhouette() const {
   const TrackerState& s = impl_->state;
+  if (s.model() == ObjectModelKind::Flow) {
+    const cv::Mat& m = s.flow.silhouette();
+    if (m.empty()) return {};
+    return {ImageView(m.data, m.cols, m.rows, static_cast<std::ptrdiff_t>(m.step)),
+            Rect{0, 0, m.cols, m.rows}, s.flow.scale(), impl_->width, impl_->height};
+  }
   if (s.model() != ObjectModelKind::Appearance || !s.object.tracking() || !s.track().last)
     return {};
   const Mask& m = s.object.silhouette();
@@ -126,8 +151,15 @@ TrackResult Tracker::Impl::check_and_track(const ColorView& frame, EdgeSource& e
   // An edge map given as the frame (EdgeDetector::Input) shows no appearance: the edges model.
   state.use_model(edges.params().detector == EdgeDetector::Input ? ObjectModelKind::Edges
                                                                  : in.tp.model);
-  return state.model() == ObjectModelKind::Edges ? track_edges(frame, edges, in)
-                                                 : track_appearance(frame, edges, in);
+  switch (state.model()) {
+    case ObjectModelKind::Edges:
+      return track_edges(frame, edges, in);
+    case ObjectModelKind::Flow:
+      return track_flow(frame, edges, in);
+    case ObjectModelKind::Appearance:
+      break;
+  }
+  return track_appearance(frame, edges, in);
 }
 
 void Tracker::Impl::accept(const Features& f, int width, int height, const FrameInput& in,

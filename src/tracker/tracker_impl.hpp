@@ -9,12 +9,15 @@
 #include <array>
 #include <atomic>
 #include <memory>
+#include <opencv2/core.hpp>
 #include <string>
 
 #include "core/mask.hpp"
 #include "edges/edge_source.hpp"
 #include "projtrack/tracker.hpp"
 #include "projtrack/work_budget.hpp"
+#include "segmentation/work_images.hpp"
+#include "tracker/acquisition_policy.hpp"
 #include "tracker/silhouette_estimate.hpp"
 #include "tracker/tracker_state.hpp"
 
@@ -27,6 +30,8 @@ struct FrameWork {
   WorkBudget budget;       // this frame's: every estimate spends from it
   Mask first, silhouette;  // the finder's first silhouette; the object model's on this frame
   SilhouetteEstimateBuffers on_silhouette;
+  WorkImages images;  // the flow model's frame
+  cv::Mat inside;     // the flow model's first silhouette
 
   Estimator& estimator(Method m);
 };
@@ -55,7 +60,20 @@ struct Tracker::Impl {
   TrackResult track_appearance(const ColorView& frame, EdgeSource& edges, const FrameInput& in);
   TrackResult start_appearance(const ColorView& frame, EdgeSource& edges, const FrameInput& in);
   TrackResult follow_appearance(const ColorView& frame, EdgeSource& edges, const FrameInput& in);
-  Features estimate_silhouette(const ColorView& frame, const FrameInput& in);
+  // The frame as the appearance model reads it (a dim one stretched: Exposure).
+  ColorView as_appearance_reads(const ColorView& raw, const TrackerParams& tp);
+  // The estimate on work.silhouette, a mask at `scale`.
+  Features estimate_silhouette(const ColorView& frame, int scale, const FrameInput& in);
+  // The flow model's steps (flow_track.cpp): a new object, or the tracked one.
+  TrackResult track_flow(const ColorView& frame, EdgeSource& edges, const FrameInput& in);
+  TrackResult start_flow(const ColorView& frame, EdgeSource& edges, const FrameInput& in);
+  TrackResult follow_flow(const ColorView& frame, const FrameInput& in);
+  // The flow model's first silhouette, into work.inside: the user's mask, GrabCut in the user's
+  // box, or the appearance model's start (a point, or none).
+  AppearanceStart first_flow_silhouette(const ColorView& frame, EdgeSource& edges,
+                                        const FrameInput& in);
+  // The flow model's silhouette as the estimator reads it (work.silhouette), and its estimate.
+  Features estimate_flow_silhouette(const ColorView& frame, const FrameInput& in);
 
   // The tracker's verdicts on a frame's estimate, as its result (tracker.cpp). accept: `f` is
   // this frame's (`resumed`: the object found again by its colours). refuse: the last accepted

@@ -19,6 +19,12 @@ void TrackerState::seed_box(const Rect& box) {
   track_.seed_box = box;
 }
 
+void TrackerState::seed_mask(const cv::Mat& mask, const Rect& box, Point2i deepest) {
+  seed_box(box);
+  track_.inner = deepest;
+  track_.seed_mask = mask;
+}
+
 void TrackerState::reset() {
   drop(Keep::Nothing);
   edges_acquisition.reset();
@@ -32,6 +38,7 @@ void TrackerState::drop(Keep keep) {
   }
   t.inner.reset();
   t.seed_box.reset();
+  t.seed_mask.release();
   t.last.reset();
   t.velocity = {0, 0};
   t.accepted = 0;
@@ -47,13 +54,19 @@ void TrackerState::drop(Keep keep) {
   } else {
     object.forget();
   }
+  flow.forget(keep == Keep::Nothing);
 }
 
 void TrackerState::use_model(ObjectModelKind kind) {
   if (kind == model_) return;
+  // The user's start (point, box, mask) is kept: the new model starts from it its own way.
   const std::optional<Point2i> inner = track_.inner;
+  const std::optional<Rect> box = track_.seed_box;
+  const cv::Mat mask = track_.seed_mask;
   reset();
   track_.inner = inner;
+  track_.seed_box = box;
+  track_.seed_mask = mask;
   model_ = kind;
 }
 
@@ -72,6 +85,7 @@ bool TrackerState::accept(const Features& f, bool resumed, double t, int width, 
                    : Point2d{0, 0};
   k.inner = f.inner_point;
   k.seed_box.reset();
+  k.seed_mask.release();
   k.last = f;
   k.refused_in_a_row = 0;
   k.refusals <<= 1;
@@ -138,6 +152,7 @@ void TrackerState::relearn() {
   // track (accept()).
   if (track_.last && !track_.seed_box) track_.seed_box = track_.last->bbox;
   object.forget();
+  flow.forget();
   motion.reset();
   moved = {};
   moved_before = {};

@@ -17,6 +17,7 @@
 #include "projtrack/geometry.hpp"
 #include "projtrack/motion_detector.hpp"
 #include "projtrack/tracker_params.hpp"
+#include "segmentation/flow_segmenter.hpp"
 
 namespace projtrack {
 
@@ -26,6 +27,7 @@ class TrackerState {
   struct Track {
     std::optional<Point2i> inner;  // where the next estimate starts (none: no track)
     std::optional<Rect> seed_box;  // the user's box, until the track starts from it
+    cv::Mat seed_mask;             // the user's mask (frame size), until the track starts from it
     std::optional<Features> last;  // the last accepted estimate
     Point2d velocity;              // of the centroid between the last two accepted frames, px
     int accepted = 0;              // frames accepted since the track started
@@ -44,6 +46,7 @@ class TrackerState {
   // The stages' memories between frames.
   Pointer pointer;
   SilhouetteModel object;               // the appearance model's object
+  FlowSegmenter flow;                   // the flow model's object
   ObjectFinder finder;                  // the appearance model's search, and the scene's background
   MotionDetector motion;                // the appearance model's frame differencing
   MotionDetector::Motion moved;         // the last frame's motion
@@ -54,6 +57,8 @@ class TrackerState {
   // The user's point or box: a new object, tracked from there on the next frame.
   void seed(Point2i p);
   void seed_box(const Rect& box);
+  // The user's mask (CV_8U, frame size, non-zero on the object), with its box and deepest point.
+  void seed_mask(const cv::Mat& mask, const Rect& box, Point2i deepest);
   // Forgets the object and its colours: acquisition starts over.
   void reset();
   // Ends the track (a press held is released); with Keep::Colours the object's colours stay

@@ -1,0 +1,33 @@
+// How the flow model follows the whole object (ObjectModelKind::Flow): its last silhouette
+// carried along the picture's dense motion, then cut from its surroundings by colour and motion
+// (src/segmentation/flow_segmenter.hpp). Part of TrackerParams; every length is a share of the
+// object's √area, so the same values hold for a small and a large object.
+#pragma once
+
+namespace projtrack {
+
+struct FlowModelParams {
+  // The working scale makes the frame about this many work pixels (an integer scale: 854×480 and
+  // 640×480 are read at half size, 1080p at a fifth).
+  double work_pixels = 100000;
+  // How far the object may have moved beyond what the flow says: the carried silhouette is
+  // blurred this share of √area wide before it becomes the prior.
+  double prior_spread = 0.2;
+  // The prior's confidence is kept within [floor, 1 - floor]: colour and motion can overrule it.
+  double prior_floor = 0.02;
+  // How fast the colours follow the object's (the share of one frame), and the share of the
+  // first frame's colours in the evidence (they anchor it against drift).
+  double learning_rate = 0.05;
+  double first_share = 0.5;
+  // Motion evidence: the surroundings' motion is read in a ring this share of √area wide; a
+  // pixel's evidence is at most this many nats either way; none when the object and its
+  // surroundings move less than `min_separation` work px a frame apart.
+  double motion_ring = 0.5;
+  double motion_weight = 2.0;
+  double min_separation = 1.0;
+  // A piece of the new silhouette is kept when it holds at least this share of the prior that
+  // the best piece holds: a region of the object's colours apart from it is not the object.
+  double keep_share = 0.1;
+};
+
+}  // namespace projtrack

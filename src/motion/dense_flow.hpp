@@ -1,0 +1,25 @@
+// How the whole picture moved between two frames: dense optical flow at the working scale
+// (OpenCV's DIS, the library made for it), computed once per frame for every user of it.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <opencv2/video/tracking.hpp>
+
+namespace projtrack {
+
+class DenseFlow {
+ public:
+  // The flow from `gray` (this frame, work scale, CV_8U) back to the last frame given: for each
+  // pixel of this frame, where it was on the last one (CV_32FC2, work pixels). False, with no
+  // flow, on the first frame and after a change of size (nothing to compare with).
+  bool compute(const cv::Mat& gray);
+  const cv::Mat& backward() const { return flow_; }
+  // Forgets the last frame: the next compute() starts afresh.
+  void reset();
+
+ private:
+  cv::Ptr<cv::DISOpticalFlow> dis_;
+  cv::Mat last_, flow_;
+};
+
+}  // namespace projtrack

@@ -1,0 +1,75 @@
+#include "motion/motion_evidence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace projtrack {
+
+void carry_along_flow(const cv::Mat& last, const cv::Mat& flow, cv::Mat& map, cv::Mat& prior) {
+  map.create(flow.size(), CV_32FC2);
+  for (int y = 0; y < flow.rows; ++y) {
+    const cv::Point2f* f = flow.ptr<cv::Point2f>(y);
+    cv::Point2f* m = map.ptr<cv::Point2f>(y);
+    for (int x = 0; x < flow.cols; ++x) m[x] = {x + f[x].x, y + f[x].y};
+  }
+  cv::remap(last, prior, map, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+}
+
+namespace {
+
+// The median of each component of the flow where `where` is set, from at most ~4 000 samples
+// (a regular subsample: the median of a region needs no more).
+bool median_flow(const cv::Mat& flow, const cv::Mat& where, int count, cv::Point2f& out) {
+  if (count == 0) return false;
+  const int step = std::max(1, static_cast<int>(std::sqrt(count / 4000.0)));
+  std::vector<float> xs, ys;
+  for (int y = 0; y < flow.rows; y += step) {
+    const cv::Point2f* f = flow.ptr<cv::Point2f>(y);
+    const std::uint8_t* w = where.ptr<std::uint8_t>(y);
+    for (int x = 0; x < flow.cols; x += step)
+      if (w[x]) xs.push_back(f[x].x), ys.push_back(f[x].y);
+  }
+  if (xs.empty()) return false;
+  const auto mid = xs.size() / 2;
+  std::nth_element(xs.begin(), xs.begin() + mid, xs.end());
+  std::nth_element(ys.begin(), ys.begin() + mid, ys.end());
+  out = {xs[mid], ys[mid]};
+  return true;
+}
+
+}  // namespace
+
+MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring) {
+  MotionSplit s;
+  const int area = cv::countNonZero(inside);
+  if (area == 0) return s;
+  const int r = std::max(1, static_cast<int>(ring * std::sqrt(static_cast<double>(area))));
+  cv::Mat around;
+  cv::dilate(inside, around, cv::getStructuringElement(cv::MORPH_RECT, {2 * r + 1, 2 * r + 1}));
+  around.setTo(0, inside);
+  s.valid = median_flow(flow, inside, area, s.object) &&
+            median_flow(flow, around, cv::countNonZero(around), s.surroundings);
+  if (s.valid) s.separation = static_cast<float>(cv::norm(s.object - s.surroundings));
+  return s;
+}
+
+void add_motion_evidence(const cv::Mat& flow, const MotionSplit& split, double clamp,
+                         double min_separation, cv::Mat& log_odds) {
+  if (!split.valid || split.separation < min_separation) return;
+  const float spread = 0.5f * split.separation;
+  const float k = 1.0f / (2 * spread * spread), c = static_cast<float>(clamp);
+  const cv::Point2f o = split.object, b = split.surroundings;
+  for (int y = 0; y < flow.rows; ++y) {
+    const cv::Point2f* f = flow.ptr<cv::Point2f>(y);
+    float* l = log_odds.ptr<float>(y);
+    for (int x = 0; x < flow.cols; ++x) {
+      const cv::Point2f d_o = f[x] - o, d_b = f[x] - b;
+      const float e = (d_b.dot(d_b) - d_o.dot(d_o)) * k;
+      l[x] += std::clamp(e, -c, c);
+    }
+  }
+}
+
+}  // namespace projtrack

@@ -1,0 +1,30 @@
+// Motion as evidence about the object: the previous silhouette carried along the flow (a prior),
+// and how much more each pixel moves like the object than like its surroundings.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+namespace projtrack {
+
+// `last` (CV_32F, values in [0, 1], the last frame's silhouette) moved to this frame along the
+// backward flow `flow` (DenseFlow::backward()): each pixel takes the value where it came from
+// (0 from outside the frame). `map` is a buffer.
+void carry_along_flow(const cv::Mat& last, const cv::Mat& flow, cv::Mat& map, cv::Mat& prior);
+
+// The object's and its surroundings' motions: the median flow inside the prior and in a ring
+// around it (`ring` × √area wide).
+struct MotionSplit {
+  cv::Point2f object, surroundings;
+  float separation = 0;  // how far apart the two motions are, work px a frame
+  bool valid = false;    // both regions have pixels
+};
+MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring);
+
+// Adds to `log_odds` (CV_32F) each pixel's evidence of moving with the object rather than with
+// its surroundings: a Gaussian log-likelihood ratio whose spread is half the motions' separation,
+// clamped to ±`clamp` (motion is one cue of several). Nothing when the two motions are closer
+// than `min_separation` work px: then motion tells nothing apart.
+void add_motion_evidence(const cv::Mat& flow, const MotionSplit& split, double clamp,
+                         double min_separation, cv::Mat& log_odds);
+
+}  // namespace projtrack

@@ -1,0 +1,79 @@
+#include "segmentation/colour_mixture.hpp"
+
+#include <cmath>
+#include <numeric>
+
+namespace projtrack {
+
+namespace {
+
+constexpr int kShift = 4;  // 256 / kLevels levels per bin
+constexpr float kPrior =
+    0.1f;  // a pseudo-count per bin: an unseen colour is unlikely, not impossible
+
+int bin(const cv::Vec3b& c) {
+  return ((c[0] >> kShift) * ColourMixture::kLevels + (c[1] >> kShift)) * ColourMixture::kLevels +
+         (c[2] >> kShift);
+}
+
+void normalise(std::vector<float>& h) {
+  const double total = std::accumulate(h.begin(), h.end(), 0.0);
+  for (float& v : h) v = static_cast<float>(v / total);
+}
+
+}  // namespace
+
+void ColourMixture::count(const cv::Mat& bgr, const cv::Mat& inside, Histogram& in,
+                          Histogram& out) const {
+  in.assign(kBins, kPrior);
+  out.assign(kBins, kPrior);
+  for (int y = 0; y < bgr.rows; ++y) {
+    const cv::Vec3b* p = bgr.ptr<cv::Vec3b>(y);
+    const std::uint8_t* m = inside.ptr<std::uint8_t>(y);
+    for (int x = 0; x < bgr.cols; ++x) (m[x] ? in : out)[bin(p[x])] += 1;
+  }
+  normalise(in);
+  normalise(out);
+}
+
+void ColourMixture::start(const cv::Mat& bgr, const cv::Mat& inside) {
+  count(bgr, inside, object_, surroundings_);
+  first_object_ = object_;
+  first_surroundings_ = surroundings_;
+}
+
+void ColourMixture::learn(const cv::Mat& bgr, const cv::Mat& inside, double rate) {
+  if (!learned() || cv::countNonZero(inside) == 0) return;
+  count(bgr, inside, in_, out_);
+  const auto r = static_cast<float>(rate);
+  for (int i = 0; i < kBins; ++i) {
+    object_[i] += r * (in_[i] - object_[i]);
+    surroundings_[i] += r * (out_[i] - surroundings_[i]);
+  }
+}
+
+void ColourMixture::add_evidence(const cv::Mat& bgr, double first_share, cv::Mat& log_odds) {
+  if (!learned()) return;
+  // One logarithm a colour, not a pixel.
+  const auto a = static_cast<float>(first_share), b = 1 - a;
+  ratio_.resize(kBins);
+  for (int i = 0; i < kBins; ++i) {
+    const float o = a * first_object_[i] + b * object_[i];
+    const float s = a * first_surroundings_[i] + b * surroundings_[i];
+    ratio_[i] = std::log(o / s);
+  }
+  for (int y = 0; y < bgr.rows; ++y) {
+    const cv::Vec3b* p = bgr.ptr<cv::Vec3b>(y);
+    float* l = log_odds.ptr<float>(y);
+    for (int x = 0; x < bgr.cols; ++x) l[x] += ratio_[bin(p[x])];
+  }
+}
+
+void ColourMixture::forget() {
+  object_.clear();
+  surroundings_.clear();
+  first_object_.clear();
+  first_surroundings_.clear();
+}
+
+}  // namespace projtrack

@@ -1,0 +1,36 @@
+// The object and its surroundings as mixtures of colours: a 3-D colour histogram each (16 levels
+// a channel), learned at the start and followed slowly. Several colours make one object (a white
+// cow's brown patches), and what tells it from its surroundings is each colour's share in both.
+#pragma once
+
+#include <array>
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace projtrack {
+
+class ColourMixture {
+ public:
+  static constexpr int kLevels = 16;  // per channel: coarse enough to learn from one frame
+  static constexpr int kBins = kLevels * kLevels * kLevels;
+
+  // Learns both models from `bgr` (CV_8UC3): the object where `inside` (CV_8U) is set, its
+  // surroundings elsewhere. The first models are kept: they anchor later ones against drift.
+  void start(const cv::Mat& bgr, const cv::Mat& inside);
+  // Follows the colours of this frame's silhouette at `rate` (the share of one frame).
+  void learn(const cv::Mat& bgr, const cv::Mat& inside, double rate);
+  // Adds each pixel's log-likelihood ratio of object against surroundings to `log_odds`
+  // (CV_32F): the mean of the first and the followed models, each `first_share` and the rest.
+  void add_evidence(const cv::Mat& bgr, double first_share, cv::Mat& log_odds);
+  bool learned() const { return !object_.empty(); }
+  void forget();
+
+ private:
+  using Histogram = std::vector<float>;
+  void count(const cv::Mat& bgr, const cv::Mat& inside, Histogram& in, Histogram& out) const;
+
+  Histogram object_, surroundings_, first_object_, first_surroundings_;
+  Histogram in_, out_, ratio_;  // one frame's counts; its log-likelihood ratio per colour
+};
+
+}  // namespace projtrack

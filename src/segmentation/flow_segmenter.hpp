@@ -1,0 +1,44 @@
+// The flow model's object: its silhouette on every frame, where the last one carried along the
+// picture's motion (the prior), the object's colours against its surroundings' and its own motion
+// against theirs agree on "object". A stage: the silhouette is its output, the colours and the
+// last silhouette its memory.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "motion/dense_flow.hpp"
+#include "projtrack/flow_model_params.hpp"
+#include "segmentation/colour_mixture.hpp"
+#include "segmentation/work_images.hpp"
+
+namespace projtrack {
+
+class FlowSegmenter {
+ public:
+  // A new object: `inside` (CV_8U at the work size, non-zero on the object) on `img`.
+  void start(const WorkImages& img, const cv::Mat& inside);
+  // The object on the next frame. False when nothing of it is left (or the frame's size changed):
+  // the silhouette is then empty.
+  bool follow(const WorkImages& img, const FlowModelParams& p);
+  // This frame's silhouette, 255 on the object (CV_8U, work size); empty when there is none.
+  const cv::Mat& silhouette() const { return mask_; }
+  bool tracking() const { return !mask_.empty(); }
+  int scale() const { return scale_; }
+  // Forgets the silhouette; with `colours` false the colours too.
+  void forget(bool colours = true);
+
+ private:
+  // The posterior's log-odds of "object" on this frame, from the prior, colours and motion.
+  void weigh_evidence(const WorkImages& img, double area, const FlowModelParams& p);
+  // Keeps the pieces of the thresholded posterior that hold enough of the prior.
+  void keep_pieces_on_prior(double keep_share);
+
+  DenseFlow flow_;
+  ColourMixture colours_;
+  int scale_ = 1;
+  cv::Mat last_;  // the last silhouette, CV_32F 0 or 1
+  cv::Mat mask_;  // this frame's, CV_8U 0 or 255
+  cv::Mat map_, prior_, log_odds_, inside_, labels_, stats_, centroids_;  // buffers
+};
+
+}  // namespace projtrack

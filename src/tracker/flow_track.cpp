@@ -1,0 +1,134 @@
+// The flow model's step: the object's silhouette carried along the picture's motion and cut from
+// its surroundings (segmentation/flow_segmenter), and the estimator on that silhouette.
+#include <opencv2/imgproc.hpp>
+
+#include "core/plausibility.hpp"
+#include "core/work_frame.hpp"
+#include "segmentation/box_start.hpp"
+#include "tracker/tracker_impl.hpp"
+
+namespace projtrack {
+
+namespace {
+
+// `m` (work coordinates at scale `from`) at the flow model's scale, 255 on the object: each work
+// pixel takes the value under its centre.
+void mask_at_scale(const Mask& m, int from, const WorkImages& img, cv::Mat& out) {
+  out = cv::Mat::zeros(img.size(), CV_8U);
+  for (int y = 0; y < out.rows; ++y) {
+    std::uint8_t* o = out.ptr<std::uint8_t>(y);
+    const int fy = (y * img.scale + img.scale / 2) / from;
+    for (int x = 0; x < out.cols; ++x)
+      if (m.at({(x * img.scale + img.scale / 2) / from, fy})) o[x] = 255;
+  }
+}
+
+}  // namespace
+
+TrackResult Tracker::Impl::track_flow(const ColorView& frame, EdgeSource& edges,
+                                      const FrameInput& in) {
+  const double pixels = static_cast<double>(frame.luma.width) * frame.luma.height;
+  build_work_images(frame, work_scale(pixels, in.tp.flow.work_pixels), work.images);
+  return state.flow.tracking() ? follow_flow(frame, in) : start_flow(frame, edges, in);
+}
+
+AppearanceStart Tracker::Impl::first_flow_silhouette(const ColorView& frame, EdgeSource& edges,
+                                                     const FrameInput& in) {
+  const TrackerState::Track& t = state.track();
+  const WorkImages& img = work.images;
+  AppearanceStart start;
+  if (!t.seed_mask.empty()) {
+    cv::resize(t.seed_mask, work.inside, img.size(), 0, 0, cv::INTER_AREA);
+    cv::compare(work.inside, 127, work.inside, cv::CMP_GT);
+    start.found = cv::countNonZero(work.inside) > 0;
+    if (!start.found) start.why = "the given mask covers no pixel at the working scale";
+    return start;
+  }
+  if (t.seed_box) {
+    object_in_box(img, to_work(*t.seed_box, img.scale), work.inside);
+    start.found = true;
+    return start;
+  }
+  // A point, or none: the appearance model finds the object's first silhouette; its colours stay
+  // known to find the object again after a loss.
+  start = start_appearance_track(state, as_appearance_reads(frame, in.tp), edges, in.tp, work.first,
+                                 work.silhouette);
+  if (start.found) {
+    mask_at_scale(work.silhouette, state.object.scale(), img, work.inside);
+    state.object.forget_position();
+  }
+  return start;
+}
+
+Features Tracker::Impl::estimate_flow_silhouette(const ColorView& frame, const FrameInput& in) {
+  const cv::Mat& m = state.flow.silhouette();
+  const cv::Rect b = cv::boundingRect(m);
+  work.silhouette.reset({b.x, b.y, b.width, b.height});
+  for (int y = 0; y < b.height; ++y) {
+    const std::uint8_t* from = m.ptr<std::uint8_t>(b.y + y) + b.x;
+    std::uint8_t* to = work.silhouette.row(y);
+    for (int x = 0; x < b.width; ++x) to[x] = from[x] ? 1 : 0;
+  }
+  return estimate_silhouette(frame, state.flow.scale(), in);
+}
+
+TrackResult Tracker::Impl::start_flow(const ColorView& frame, EdgeSource& edges,
+                                      const FrameInput& in) {
+  TrackResult r;
+  if (waits_for_user(state, in.tp)) {
+    r.status = TrackStatus::NoInnerPoint;
+    r.detail = kNoInnerPoint;
+    return r;
+  }
+  const int w = frame.luma.width, h = frame.luma.height;
+  const bool seeded = state.track().inner.has_value();
+  AppearanceStart start = first_flow_silhouette(frame, edges, in);
+  if (start.found) {
+    state.flow.start(work.images, work.inside);
+    const Features f = estimate_flow_silhouette(frame, in);
+    if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
+      state.flow.forget(false);
+      stopped(f, in.tp, r);
+      return r;
+    }
+    start.why = why_implausible(f, w, h, in.tp, seeded ? Origin::User : Origin::Found);
+    if (start.why.empty()) {
+      accept(f, w, h, in, start.resumed, r);
+      return r;
+    }
+    state.flow.forget(false);
+  } else if (work_stopped()) {
+    stopped(Features{}, in.tp, r);
+    return r;
+  }
+  if (seeded) {  // the user's start: keep trying it for a while, as a refused estimate
+    refuse(std::move(start.why), in.tp, r);
+    return r;
+  }
+  r.status = TrackStatus::Searching;
+  r.detail = std::move(start.why);
+  return r;
+}
+
+TrackResult Tracker::Impl::follow_flow(const ColorView& frame, const FrameInput& in) {
+  TrackResult r;
+  if (!state.flow.follow(work.images, in.tp.flow)) {
+    refuse("nothing of the object is left where the picture's motion carried it", in.tp, r);
+    return r;
+  }
+  const Features f = estimate_flow_silhouette(frame, in);
+  if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
+    stopped(f, in.tp, r);
+    return r;
+  }
+  const Origin origin = state.track().seeded ? Origin::User : Origin::Found;
+  if (std::string why = why_implausible(f, frame.luma.width, frame.luma.height, in.tp, origin);
+      !why.empty()) {
+    refuse(std::move(why), in.tp, r);
+    return r;
+  }
+  accept(f, frame.luma.width, frame.luma.height, in, false, r);
+  return r;
+}
+
+}  // namespace projtrack
