@@ -8,7 +8,7 @@ Writes into OUT:
   frames.csv  one row per run and scored frame: J, F (with its precision and recall), kept, ms
   runs.csv    one row per run: measured or not (and why), its frames, its start's cost
   masks/      the predicted masks (PNG) of projtrack's runs on the frames the contact sheets show:
-              1, N/2, N-2 and the run's lowest J
+              1, N/2, N-2 and the lowest J of the first-mask start (save_masks)
   meta.json   the data, the settings, the module, the machine and the run's duration
 --quick: two sequences (--sequences, default cows and dog), 10 frames each (--frames).
 """
@@ -41,8 +41,9 @@ def sheet_frames(n, js):
     return sorted(i for i in chosen if 1 <= i <= n - 2)
 
 
-def run_one(seq, tracker, start, frames, masks, args, out, rows):
-    """One run, scored; its frames' rows appended to rows. Returns its runs.csv row."""
+def run_one(seq, tracker, start, frames, masks, args, rows):
+    """One run, scored; its frames' rows appended to rows. Returns its runs.csv row, its J per
+    scored frame ({frame: J}) and, for projtrack, its predicted masks ({frame: packed bits})."""
     n = len(frames)
     last = n - 2  # frame N-1 is not scored: no need to track it
     base = {"sequence": seq, "tracker": tracker, "start": start}
@@ -50,7 +51,7 @@ def run_one(seq, tracker, start, frames, masks, args, out, rows):
         gen = runners.runner(tracker, start, frames, masks[0], last, args.model)
     except runners.NotMeasured as e:
         print(f"  {tracker:10s} {start:5s} not measured: {e}", file=sys.stderr)
-        return dict(base, measured=0, frames=0, init_ms="", note=str(e))
+        return dict(base, measured=0, frames=0, init_ms="", note=str(e)), {}, {}
     _, init_ms = next(gen)
     js, kept_masks = {}, {}
     for i, p in gen:
@@ -70,18 +71,25 @@ def run_one(seq, tracker, start, frames, masks, args, out, rows):
                          ms="" if math.isnan(p.ms) else f"{p.ms:.3f}",
                          pred_area=f"{p.area:.0f}", true_area=int(np.count_nonzero(truth)),
                          status=p.status))
-    if tracker == "projtrack":
-        folder = os.path.join(out, "masks", seq)
-        os.makedirs(folder, exist_ok=True)
-        shape = masks[0].shape
-        for i in sheet_frames(n, js):
-            m = np.unpackbits(kept_masks[i])[:shape[0] * shape[1]].reshape(shape)
-            cv2.imwrite(os.path.join(folder, f"{start}-{i:05d}.png"), m * 255)
     mean_j = sum(js.values()) / len(js) if js else math.nan
     print(f"  {tracker:10s} {start:5s} J {100 * mean_j:5.1f} over {len(js)} frames",
           file=sys.stderr)
     return dict(base, measured=1, frames=len(js),
-                init_ms="" if math.isnan(init_ms) else f"{init_ms:.3f}", note="")
+                init_ms="" if math.isnan(init_ms) else f"{init_ms:.3f}", note=""), js, kept_masks
+
+
+def save_masks(out, seq, n, shape, js, packed):
+    """The predicted masks of projtrack's runs on the frames the sequence's contact sheet shows:
+    1, N/2, N-2 and the lowest J of the first-mask start (of the box start when the mask start
+    was not measured). js and packed: {start: {frame: ...}}."""
+    sheet_start = "mask" if js.get("mask") else "box"
+    frames = sheet_frames(n, js.get(sheet_start, {}))
+    folder = os.path.join(out, "masks", seq)
+    os.makedirs(folder, exist_ok=True)
+    for start, masks in packed.items():
+        for i in frames:
+            m = np.unpackbits(masks[i])[:shape[0] * shape[1]].reshape(shape)
+            cv2.imwrite(os.path.join(folder, f"{start}-{i:05d}.png"), m * 255)
 
 
 def module_info(model):
@@ -120,8 +128,13 @@ def main():
         frames, masks = dataset.load(args.data, seq, limit)
         lengths[seq] = len(frames)
         print(f"davis: {seq} ({len(frames)} frames)", file=sys.stderr)
+        js, packed = {}, {}
         for tracker, start in runners.plan():
-            runs.append(run_one(seq, tracker, start, frames, masks, args, args.out, rows))
+            run, js_run, packed_run = run_one(seq, tracker, start, frames, masks, args, rows)
+            runs.append(run)
+            if tracker == "projtrack" and run["measured"]:
+                js[start], packed[start] = js_run, packed_run
+        save_masks(args.out, seq, len(frames), masks[0].shape, js, packed)
     write_csv(os.path.join(args.out, "frames.csv"), rows)
     write_csv(os.path.join(args.out, "runs.csv"), runs)
     meta = {"data": os.path.abspath(args.data), "sequences": wanted, "frames": lengths,
