@@ -95,7 +95,7 @@ def sheet(res, seq, frames, path):
             pred = cv2.imread(p, cv2.IMREAD_GRAYSCALE) > 0 if os.path.exists(p) else None
             j = js.get(i)
             jt = f"J {100 * j:.0f}" if j is not None else "J not measured"
-            tiles.append(tile(frame, pred, truth, f"{key[1]}: frame {i} ({why}), {jt}"))
+            tiles.append(tile(frame, pred, truth, f"{key[1]}, frame {i} ({why}): {jt}"))
         rows.append(np.hstack(tiles))
     cv2.imwrite(path, np.vstack(rows))
     return True

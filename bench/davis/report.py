@@ -95,7 +95,7 @@ def means_table(res, published, methods):
                  for m in R.MEASURES]
         note = ""
         if not all(res.measured(s, key) for s in res.sequences):
-            note = f" ({res.note(key) or 'not measured on every sequence'})"
+            note = " (not measured: below)" if res.note(key) else " (not on every sequence)"
         lines.append(f"| {R.LABELS[key]}{note} | " + " | ".join(cells) + " |")
     for m in methods:
         vals = [published[m].get(s) for s in res.sequences]
@@ -107,8 +107,7 @@ def means_table(res, published, methods):
 
 def per_sequence_table(res, measure, published=None, methods=()):
     keys = [k for k in res.keys if not (measure == "ms" and k[0] == "hold")]
-    head = ["sequence"] + [R.LABELS[k].replace("OpenCV ", "").replace(", box", " (box)")
-                           for k in keys] + [f"{m}*" for m in methods]
+    head = ["sequence"] + [R.SHORT[k] for k in keys] + [f"{m}*" for m in methods]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for s in res.sequences:
         cells = [CELL[measure](res.seq_mean(s, k, measure)) for k in keys]
@@ -130,11 +129,11 @@ def sheet_frames(res, seq):
         else ("projtrack", "box")
     worst = res.worst_frame(seq, start)
     why = {}
-    for i, w in ((1, "first scored"), (n // 2, "N/2"), (n - 2, "N-2")):
+    for i, w in ((1, "1"), (n // 2, "N/2"), (n - 2, "N-2")):
         if 1 <= i <= n - 2:
             why.setdefault(i, w)
     if worst is not None:
-        why[worst] = f"lowest J from the {start[1]}"
+        why[worst] = f"worst of {start[1]}"
     return sorted(why.items()), start[1]
 
 
@@ -183,7 +182,7 @@ def write_doc(res, doc_dir, path):
         frames, start = sheet_frames(res, s)
         name = f"sheet-{s}.png"
         if figures.sheet(res, s, frames, os.path.join(doc_dir, name)):
-            worst = [i for i, w in frames if w.startswith("lowest")]
+            worst = [i for i, w in frames if w.startswith("worst")]
             lines += [f"**{s}** (lowest J from the {start}: frame "
                       f"{worst[0] if worst else MISSING})", "",
                       f"![{s}: projtrack's masks (magenta) against the truth (green)]"

@@ -21,6 +21,11 @@ LABELS = collections.OrderedDict([
     (("MOSSE", "box"), "OpenCV MOSSE, box"),
     (("MedianFlow", "box"), "OpenCV MedianFlow, box"),
 ])
+# The tables' column heads.
+SHORT = {("projtrack", "mask"): "projtrack mask", ("projtrack", "box"): "projtrack box",
+         ("projtrack", "click"): "projtrack click", ("hold", "mask"): "held mask",
+         ("CSRT", "box"): "CSRT", ("KCF", "box"): "KCF", ("MOSSE", "box"): "MOSSE",
+         ("MedianFlow", "box"): "MedianFlow"}
 MEASURES = ("j", "f", "kept", "ms")
 
 

@@ -3,6 +3,7 @@
 DAVIS layout, scored per frame over frames 1 .. N-2 (the DAVIS 2016 protocol).
 
     run.py --data DIR --out OUT [--quick] [--sequences a,b] [--frames N] [--model NAME]
+           [--trackers projtrack,hold,...]
 
 Writes into OUT:
   frames.csv  one row per run and scored frame: J, F (with its precision and recall), kept, ms
@@ -108,6 +109,8 @@ def main():
     ap.add_argument("--sequences", help="comma-separated (default: all; --quick: cows,dog)")
     ap.add_argument("--frames", type=int, help="the first N frames of each sequence")
     ap.add_argument("--model", help="projtrack's object model (default: the module's)")
+    ap.add_argument("--trackers", help="comma-separated trackers to run (default: all): "
+                    + ",".join(dict.fromkeys(t for t, _ in runners.plan())))
     args = ap.parse_args()
     dataset.check_dir(args.data)
     seqs = dataset.sequences(args.data)
@@ -117,6 +120,10 @@ def main():
     if unknown:
         raise SystemExit(f"davis: no sequence {', '.join(unknown)} in {args.data}")
     limit = args.frames or (QUICK_FRAMES if args.quick else None)
+    names = dict.fromkeys(t for t, _ in runners.plan())
+    only = args.trackers.split(",") if args.trackers else list(names)
+    if any(t not in names for t in only):
+        raise SystemExit(f"davis: --trackers: not among {', '.join(names)}")
     try:
         info = module_info(args.model)
     except ValueError as e:
@@ -129,7 +136,7 @@ def main():
         lengths[seq] = len(frames)
         print(f"davis: {seq} ({len(frames)} frames)", file=sys.stderr)
         js, packed = {}, {}
-        for tracker, start in runners.plan():
+        for tracker, start in [r for r in runners.plan() if r[0] in only]:
             run, js_run, packed_run = run_one(seq, tracker, start, frames, masks, args, rows)
             runs.append(run)
             if tracker == "projtrack" and run["measured"]:
@@ -138,7 +145,8 @@ def main():
     write_csv(os.path.join(args.out, "frames.csv"), rows)
     write_csv(os.path.join(args.out, "runs.csv"), runs)
     meta = {"data": os.path.abspath(args.data), "sequences": wanted, "frames": lengths,
-            "frame_limit": limit, "quick": args.quick, "model": args.model or "",
+            "frame_limit": limit, "quick": args.quick, "trackers": only,
+            "opencv_threads": cv2.getNumThreads(), "model": args.model or "",
             "module": info, "opencv": cv2.__version__, "python": platform.python_version(),
             "machine": {"cpu": platform.processor() or platform.machine(),
                         "cores": os.cpu_count(), "system": platform.platform()},
