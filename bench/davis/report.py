@@ -7,15 +7,18 @@ run's data; what the run did not measure reads "not measured".
     report.py DATA_DIR DOC_DIR OUTPUT.md [--readme README.md]
 """
 import argparse
+import math
 import os
 import shutil
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from report_kit import DASH, MISSING, fmt_num, fmt_pct, missing  # noqa: E402
+from report_kit import (DASH, MISSING, fmt_num, fmt_pct, fmt_res, frame_size,  # noqa: E402
+                        missing)
 
 import dataset  # noqa: E402
 import figures  # noqa: E402
+import measures  # noqa: E402
 import results as R  # noqa: E402
 
 README_BEGIN = "<!-- DAVIS summary: written by bench/davis/report.py -->"
@@ -40,15 +43,23 @@ def intro(meta, res):
     n = res.scored_frames()
     quick = " (a quick run: " + str(meta["frame_limit"]) + " frames a sequence)" \
         if meta.get("frame_limit") else ""
+    load = " at the start, ".join(str(x) for x in meta["machine"].get("load", [])) + " at the end" \
+        if meta["machine"].get("load") else MISSING
+    size_set = sorted(set(meta.get("sizes", {}).values()))
+    sizes = ", ".join(fmt_res(z) for z in size_set) or MISSING
+    tolerance = ", ".join(
+        f"{math.ceil(measures.BOUND_TH * math.hypot(*frame_size(z)))} px at {fmt_res(z)}"
+        for z in size_set) or MISSING
     model = meta["model"] or f"the module's default, `{meta['module']['settings'].get('model')}`"
     return f"""# projtrack on DAVIS 2016 (the development split)
 
 Written by `./run bench --davis` (bench/davis/report.py) from the run of {meta['date']}{quick}:
 every number below is computed from that run's data; "{MISSING}" marks what it did not measure.
 
-**What it measures.** How well one object is followed on real footage no one here shot: the ten
-sequences of `davis-dev/` (ten of the twenty of DAVIS 2016 val, Perazzi et al., CVPR 2016; a mask
-of the object on every frame, 854×480). projtrack (the Python module, `projtrack.Tracker`, object
+**What it measures.** How well one object is followed on real footage no one here shot: the
+{len(res.sequences)} sequences of `{os.path.basename(meta['data'])}/` in this run (davis-dev holds ten
+of the twenty sequences of DAVIS 2016 val, Perazzi et al., CVPR 2016, with a mask of the object
+on every frame; frames of {sizes} px here). projtrack (the Python module, `projtrack.Tracker`, object
 model: {model}) is started on frame 0 in three ways — **from the first mask** (`init(frame, mask)`,
 the benchmark's own start), **from its box** (the tight bounding box of the first mask) and
 **from a click** at its deepest point (the maximum of the first mask's distance transform) — and
@@ -63,7 +74,7 @@ KCF, MOSSE and MedianFlow** started from the box (OpenCV {meta['opencv']}).
   A box tracker's mask is its box, filled.
 - **F**: DAVIS's boundary F-measure: the one-pixel boundaries of both masks (DAVIS's seg2bmap),
   a boundary pixel matched when the other boundary passes within ceil(0.008 × the diagonal) px
-  (8 px at 854×480, by distance transform), F = 2PR/(P+R) of the matched shares; averaged as J.
+  ({tolerance}, by distance transform), F = 2PR/(P+R) of the matched shares; averaged as J.
 - **kept**: the share of frames whose centroid lies within ¼·√(true area) of the true centroid
   **and** whose area is within [0.5, 2]× the true area (the real-footage benchmark's measure). A
   box tracker's kept compares its box with the true box (centres and areas). On a frame where
@@ -72,8 +83,9 @@ KCF, MOSSE and MedianFlow** started from the box (OpenCV {meta['opencv']}).
   repeats the last measured ones, as the module does); its J and F use `r.mask` likewise.
 - **ms**: time.perf_counter around the tracker's call on each frame (`track()`, `update()`),
   nothing else, averaged over every timed frame of every sequence; measured in this run on
-  {meta['machine']['cores']} cores ({meta['machine']['cpu']}), shared with other work. The held
-  mask calls nothing: {DASH}.
+  {meta['machine']['cores']} cores ({meta['machine']['cpu']}), shared with other work (load
+  average {load}; OpenCV's threads: {meta.get('opencv_threads', MISSING)}): read the times as
+  this run's, not as the trackers' cost on an idle machine. The held mask calls nothing: {DASH}.
 
 The published J (the table of `davis-dev/README.md`, from the {dataset.PUBLISHED_SOURCE}) are
 those methods' results started from the first mask.

@@ -130,10 +130,12 @@ def main():
         raise SystemExit(f"davis: projtrack.Tracker(model={args.model!r}): {e}")
     os.makedirs(args.out, exist_ok=True)
     t_start = time.time()
-    rows, runs, lengths = [], [], {}
+    load_start = os.getloadavg()
+    rows, runs, lengths, sizes = [], [], {}, {}
     for seq in wanted:
         frames, masks = dataset.load(args.data, seq, limit)
         lengths[seq] = len(frames)
+        sizes[seq] = f"{frames[0].shape[1]}x{frames[0].shape[0]}"
         print(f"davis: {seq} ({len(frames)} frames)", file=sys.stderr)
         js, packed = {}, {}
         for tracker, start in [r for r in runners.plan() if r[0] in only]:
@@ -144,12 +146,15 @@ def main():
         save_masks(args.out, seq, len(frames), masks[0].shape, js, packed)
     write_csv(os.path.join(args.out, "frames.csv"), rows)
     write_csv(os.path.join(args.out, "runs.csv"), runs)
-    meta = {"data": os.path.abspath(args.data), "sequences": wanted, "frames": lengths,
+    meta = {"data": os.path.abspath(args.data), "sequences": wanted, "frames": lengths, "sizes": sizes,
             "frame_limit": limit, "quick": args.quick, "trackers": only,
             "opencv_threads": cv2.getNumThreads(), "model": args.model or "",
             "module": info, "opencv": cv2.__version__, "python": platform.python_version(),
             "machine": {"cpu": platform.processor() or platform.machine(),
-                        "cores": os.cpu_count(), "system": platform.platform()},
+                        "cores": os.cpu_count(), "system": platform.platform(),
+                        # the machine's load (1-minute average) when the run started and ended:
+                        # the timings share the cores with whatever else ran
+                        "load": [round(load_start[0], 1), round(os.getloadavg()[0], 1)]},
             "date": time.strftime("%Y-%m-%d"), "seconds": round(time.time() - t_start, 1)}
     with open(os.path.join(args.out, "meta.json"), "w") as f:
         json.dump(meta, f, indent=1)
