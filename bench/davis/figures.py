@@ -76,7 +76,7 @@ def tile(frame, pred, truth, text):
 
 
 def sheet(res, seq, frames, path):
-    """A sheet of one sequence: a row per measured projtrack start, a tile per frame (frames:
+    """A sheet of one sequence (a JPEG: photographs): a row per measured projtrack start, a tile per frame (frames:
     [(index, why)]). Returns False when there is nothing to draw."""
     data = res.meta["data"]
     starts = [k for k in R.LABELS if k[0] == "projtrack" and res.measured(seq, k)]
@@ -97,5 +97,5 @@ def sheet(res, seq, frames, path):
             jt = f"J {100 * j:.0f}" if j is not None else "J not measured"
             tiles.append(tile(frame, pred, truth, f"{key[1]}, frame {i} ({why}): {jt}"))
         rows.append(np.hstack(tiles))
-    cv2.imwrite(path, np.vstack(rows))
+    cv2.imwrite(path, np.vstack(rows), [cv2.IMWRITE_JPEG_QUALITY, 90])
     return True

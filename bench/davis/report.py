@@ -141,12 +141,35 @@ def sheet_frames(res, seq):
         else ("projtrack", "box")
     worst = res.worst_frame(seq, start)
     why = {}
-    for i, w in ((1, "1"), (n // 2, "N/2"), (n - 2, "N-2")):
+    for i, w in ((1, "first"), (n // 2, "N/2"), (n - 2, "N-2")):
         if 1 <= i <= n - 2:
             why.setdefault(i, w)
     if worst is not None:
         why[worst] = f"worst of {start[1]}"
     return sorted(why.items()), start[1]
+
+
+def reading(res):
+    """Sentences computed from the per-sequence J: where each projtrack start stands against the
+    held first mask and CSRT, and where it scores (almost) nothing."""
+    out = []
+    for start in ("mask", "box", "click"):
+        key = ("projtrack", start)
+        if key not in res.keys or not any(res.measured(s, key) for s in res.sequences):
+            continue
+        seqs = [s for s in res.sequences if res.measured(s, key)]
+        j = {s: res.seq_mean(s, key, "j") for s in seqs}
+        parts = []
+        for other in (("hold", "mask"), ("CSRT", "box")):
+            if other not in res.keys:
+                continue
+            above = [s for s in seqs if res.measured(s, other) and j[s] > res.seq_mean(s, other, "j")]
+            parts.append(f"above {R.READING[other]} on {len(above)} of "
+                         f"{len(seqs)} sequences" + (f" ({', '.join(above)})" if above else ""))
+        low = [s for s in seqs if j[s] < 0.05]
+        parts.append(f"J below 5 on {len(low)}" + (f" ({', '.join(low)})" if low else ""))
+        out.append(f"- {R.LABELS[key]}: " + "; ".join(parts) + ".")
+    return out
 
 
 def summary(res, published, methods):
@@ -175,6 +198,7 @@ def write_doc(res, doc_dir, path):
         lines += ["", "Not measured: " + "; ".join(f"{n} — {res.note(k)}" for k, n in
                                                     zip([k for k in res.keys if res.note(k)],
                                                         missing_starts)) + "."]
+    lines += [""] + reading(res)
     plot = os.path.join(doc_dir, "j_per_sequence.png")
     figures.plot_j(res, published, methods, plot)
     rel = os.path.relpath(doc_dir, os.path.dirname(os.path.abspath(path)))
@@ -192,7 +216,7 @@ def write_doc(res, doc_dir, path):
               "caption gives its start, frame and J.", ""]
     for s in res.sequences:
         frames, start = sheet_frames(res, s)
-        name = f"sheet-{s}.png"
+        name = f"sheet-{s}.jpg"
         if figures.sheet(res, s, frames, os.path.join(doc_dir, name)):
             worst = [i for i, w in frames if w.startswith("worst")]
             lines += [f"**{s}** (lowest J from the {start}: frame "

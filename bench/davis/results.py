@@ -92,3 +92,5 @@ class Results:
     def worst_frame(self, seq, key):
         js = self.per_frame(seq, key, "j")
         return min(js, key=lambda i: (js[i], i)) if js else None
+# How the report's sentences name a baseline.
+READING = {("hold", "mask"): "the held first mask", ("CSRT", "box"): "CSRT (from the box)"}
