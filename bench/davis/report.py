@@ -101,10 +101,12 @@ run is `<build>/davis/frames.csv` (and `runs.csv`, `meta.json`); the doc folder 
 
 
 def means_table(res, published, methods):
-    lines = ["| run | J | F | kept | ms per frame |", "|---|---|---|---|---|"]
+    lines = ["| run | J | F | kept | ms per frame (mean) | ms per frame (median) |",
+             "|---|---|---|---|---|---|"]
     for key in res.keys:
         cells = [CELL[m](res.overall(key, m)) if not (key[0] == "hold" and m == "ms") else DASH
                  for m in R.MEASURES]
+        cells.append(fms(res.median_ms(key)) if key[0] != "hold" else DASH)
         note = ""
         if not all(res.measured(s, key) for s in res.sequences):
             note = " (not measured: below)" if res.note(key) else " (not on every sequence)"
@@ -113,7 +115,7 @@ def means_table(res, published, methods):
         vals = [published[m].get(s) for s in res.sequences]
         j = R.mean(vals) if not missing(*vals) else None
         lines.append(f"| {m} (published, first mask) | {fmt_num(j, 1)} | {DASH} | {DASH} | "
-                     f"{DASH} |")
+                     f"{DASH} | {DASH} |")
     return lines
 
 
@@ -191,7 +193,7 @@ def write_doc(res, doc_dir, path):
     published, methods = dataset.published(res.meta["data"])
     lines = [intro(res.meta, res), "## The means", "",
              f"Over the {len(res.sequences)} sequences (J, F, kept: the mean of the sequences' "
-             "means; ms: of every timed frame):", ""]
+             "means; ms: over every timed frame):", ""]
     lines += means_table(res, published, methods)
     missing_starts = [R.LABELS[k] for k in res.keys if res.note(k)]
     if missing_starts:

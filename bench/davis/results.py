@@ -86,6 +86,16 @@ class Results:
             return mean(values)
         return mean(self.seq_mean(s, key, measure) for s in self.sequences)
 
+    def median_ms(self, key):
+        """The median ms over every timed frame of every sequence; NaN as overall()."""
+        if not all(self.measured(s, key) for s in self.sequences):
+            return NAN
+        values = sorted(v for s in self.sequences for v in self.per_frame(s, key, "ms").values())
+        if not values:
+            return NAN
+        mid = len(values) // 2
+        return values[mid] if len(values) % 2 else (values[mid - 1] + values[mid]) / 2
+
     def scored_frames(self):
         return sum(len(self.per_frame(s, ("hold", "mask"), "j")) for s in self.sequences)
 
