@@ -38,7 +38,7 @@ for variable in sorted(set(re.findall(r'\$\{([A-Z_]+):-', script))):
     check(variable in help_text, f'help names the environment variable {variable}')
 
 packages = {c: set(output('packages', c).split())
-            for c in ['build', 'test', 'demo', 'fuzz', 'bench', 'real', 'speed']}
+            for c in ['build', 'test', 'demo', 'fuzz', 'bench', 'real', 'speed', 'davis']}
 heavy = {'clang', 'libclang-rt-14-dev', 'python3-matplotlib', 'libgtest-dev', 'opencv-doc'}
 check(not packages['demo'] & heavy, f'the demo installs none of {sorted(heavy)}: '
       f'{sorted(packages["demo"] & heavy)}')
@@ -47,6 +47,9 @@ real = set(re.search(r'^REAL_PACKAGES=\(([^)]*)\)', script, re.M).group(1).split
 check(real and real <= packages['test'] and real <= packages['real'],
       'the tests and bench --real install REAL_PACKAGES')
 check({'libgtest-dev', 'python3-evdev'} <= packages['test'], 'the tests install GoogleTest, evdev')
+davis = {'python3-opencv', 'python3-matplotlib'}
+check(davis <= packages['davis'] and davis <= packages['test'] and packages['build'] <= packages['davis'],
+      'bench --davis and its quick test install OpenCV\'s Python bindings, matplotlib and the build')
 check('clang' in packages['fuzz'] and 'clang' not in packages['test'], 'only fuzzing needs clang')
 check(re.search(r'apt-get install[^\n]*-q', script) and 'apt.log' in script,
       'apt runs quietly, its log kept in the build folder')
