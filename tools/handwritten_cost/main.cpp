@@ -7,8 +7,7 @@
 //
 //   meson configure build -Dtools=enabled && meson compile -C build
 //   build/tools/handwritten_cost [--quick] [--clip FILE] > docs/architecture/handwritten.csv
-//   /usr/bin/python3 tools/handwritten_table.py docs/architecture/handwritten.csv \
-//     docs/architecture.md
+//   tools/handwritten_table.py docs/architecture/handwritten.csv docs/architecture.md
 //
 // A tool rather than a section of projtrack-speed: it runs in a minute on its own (the speed
 // bench takes most of an hour), and its rows are no target of docs/performance.md.
