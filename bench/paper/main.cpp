@@ -4,13 +4,13 @@
 //
 //   projtrack-bench [--quick] [--out DIR] [--seeds N] [--reps N]
 //   projtrack-bench --list-methods   the table of methods as CSV (a run writes it to DIR too)
-#include <sys/utsname.h>
-
+//
+// The runs, the sweep, the edges' timing and the figures are here; auto acquisition is
+// acquisition.cpp, meta.json meta.cpp, the options and shared constants options.hpp.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -25,8 +25,11 @@
 #include <string>
 #include <vector>
 
+#include "acquisition.hpp"
 #include "figures.hpp"
+#include "meta.hpp"
 #include "method_list.hpp"
+#include "options.hpp"
 #include "peers.hpp"
 #include "progress.hpp"
 #include "projtrack/estimator.hpp"
@@ -36,37 +39,18 @@
 namespace projtrack::bench {
 namespace {
 
-using synthetic::frame_at;
-using synthetic::kSaneArea;
-using synthetic::kSaneCentroid;
 using synthetic::make_scene;
 using synthetic::Object;
 using synthetic::object_name;
 using synthetic::Part;
-using synthetic::run_sequence;
 using synthetic::sample_seeds;
 using synthetic::Scene;
-using synthetic::SceneModel;
 using synthetic::SceneSpec;
 using synthetic::Seed;
 using synthetic::truth_is_consistent;
 
-constexpr double kLeakFactor = 1.5;  // an estimate above 1.5× the true area leaked
 // The max gaps the sweep tries, and that the runs at the highest gap rate compare (variants.csv).
 const std::vector<double> kMaxGapValues = {2, 4, 6, 8, 12, 15};
-// Auto acquisition's strategies, by the names the report uses.
-const std::pair<const char*, AutoAcquisition> kStrategies[] = {
-    {"motion-centroid", AutoAcquisition::MotionCentroid},
-    {"compact-moving-region", AutoAcquisition::CompactMovingRegion}};
-constexpr int kAcquisitionFrames = 30;
-
-struct Options {
-  bool quick = false;
-  std::string out = "docs/benchmarks";
-  int seeds = 24;
-  int reps = 3;
-  std::string command;
-};
 
 template <class F>
 double time_us(F&& f) {
@@ -284,63 +268,6 @@ int sweep(const Options& opt, const Params& defaults, std::ostream& csv, Progres
   return inconsistent;
 }
 
-// Auto acquisition: the original system's rule (the centroid of the changed pixels) against ours
-// (the most compact closed region among seeds where the frame changed), on moving objects.
-void acquisition(const Options& opt, std::ostream& csv, Progress& progress) {
-  csv << "sequence,instance,strategy,acquired_frame,correct,sane_after,frames\n";
-  struct Sequence {
-    std::string name;
-    std::function<SceneSpec(int frame, int instance)> spec;
-  };
-  const std::vector<Sequence> sequences = {
-      {"hand-moving",
-       [](int i, int k) { return frame_at(Object::Hand, 180 + 30 * k + 4.0 * i, 250, i); }},
-      {"sphere-moving",
-       [](int i, int k) {
-         return frame_at(Object::Sphere, 200 + 3.0 * i, 180 + 20 * k + 2.0 * i, i);
-       }},
-      {"hand-slow",
-       [](int i, int k) { return frame_at(Object::Hand, 260 + 25 * k + 1.5 * i, 250, i); }},
-      {"small-sphere",
-       [](int i, int k) { return frame_at(Object::Sphere, 200 + 40 * k + 3.0 * i, 240, i, 0.5); }},
-      {"hand-with-distractor",
-       [](int i, int k) {
-         SceneSpec s = frame_at(Object::Hand, 200 + 20 * k + 4.0 * i, 280, i);
-         s.distractor = Point2d{560 - 5.0 * i, 80 + 10.0 * k};
-         return s;
-       }},
-      {"hand-with-specks-and-gaps",
-       [](int i, int k) {
-         SceneSpec s = frame_at(Object::Hand, 200 + 30 * k + 4.0 * i, 250, i);
-         s.spurious = true;
-         s.gap_rate = 0.01;
-         return s;
-       }},
-  };
-  const int instances = opt.quick ? 1 : 4, frames = kAcquisitionFrames;
-  for (const Sequence& seq : sequences) {
-    for (int k = 0; k < instances; ++k) {
-      for (auto [name, strategy] : kStrategies) {
-        TrackerParams tp;
-        tp.model = ObjectModelKind::Edges;  // the strategies are the edges model's
-        tp.strategy = strategy;
-        const auto steps = run_sequence(
-            frames, [&](int i) { return seq.spec(i, k); }, tp);
-        int acquired = -1, sane = 0;
-        for (int i = 0; i < frames; ++i) {
-          if (acquired < 0 && steps[i].result.acquired) acquired = i;
-          if (acquired >= 0) sane += steps[i].sane;
-        }
-        csv << seq.name << ',' << k << ',' << name << ',' << acquired << ','
-            << (acquired >= 0 && steps[acquired].sane) << ','
-            << (acquired >= 0 ? static_cast<double>(sane) / (frames - acquired) : 0.0) << ','
-            << frames << '\n';
-      }
-    }
-    progress.advance("acquisition " + seq.name);
-  }
-}
-
 // What the main runs leave open, on the same scenes and inner points: grid-filling at the element's
 // grid size on the gap scenes (the runs use the paper's), and gap-tolerant filling at every max gap
 // the sweep tries on the scenes with the most gaps (the sweep stops short of them), from the
@@ -391,71 +318,6 @@ void figures(const Options& opt, const Params& p) {
       cv::imwrite(dir + "/" + std::string(method_name(m)) + "-" + object_name(o) + ".png", fig);
     }
   }
-}
-
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown";
-}
-
-std::string params_json(const Params& p) {
-  std::ostringstream o;
-  o << "{\"rays\": " << p.rays << ", \"recursion\": " << p.recursion
-    << ", \"block_size\": " << p.block_size << ", \"grid_size\": " << p.grid_size
-    << ", \"max_iterations\": " << p.max_iterations << ", \"convergence\": " << p.convergence
-    << ", \"max_gap\": " << p.max_gap << "}";
-  return o.str();
-}
-
-std::string scene_model_json() {
-  std::ostringstream o;
-  o << "{\"blur_sigma\": " << SceneModel::kBlurSigma
-    << ", \"noise_sigma\": " << SceneModel::kNoiseSigma
-    << ", \"gap_run_min\": " << SceneModel::kGapRunMin
-    << ", \"gap_run_max\": " << SceneModel::kGapRunMax
-    << ", \"speck_share\": " << SceneModel::kSpeckShare << ", \"strokes\": " << SceneModel::kStrokes
-    << ", \"truth_area_tolerance\": " << SceneModel::kTruthAreaTolerance
-    << ", \"truth_analytic_tolerance\": " << SceneModel::kTruthAnalyticTolerance
-    << ", \"truth_centroid_tolerance\": " << SceneModel::kTruthCentroidTolerance << "}";
-  return o.str();
-}
-
-// Auto acquisition as the code has it (TrackerParams' defaults) and how the runs judge it.
-std::string acquisition_json() {
-  const TrackerParams tp;
-  std::string strategy = "unknown";
-  for (auto [name, s] : kStrategies)
-    if (s == tp.strategy) strategy = name;
-  std::ostringstream o;
-  o << "{\"default_strategy\": \"" << strategy << "\", \"candidates\": " << tp.candidates
-    << ", \"frames\": " << kAcquisitionFrames << ", \"sane_centroid\": " << kSaneCentroid
-    << ", \"sane_area\": " << kSaneArea << "}";
-  return o.str();
-}
-
-void write_meta(const Options& opt, const Params& compared, const Params& defaults, int scenes,
-                int inconsistent) {
-  std::ofstream o(opt.out + "/meta.json");
-  const std::time_t now = std::time(nullptr);
-  char date[32];
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  utsname u{};
-  uname(&u);
-  o << "{\n  \"command\": \"" << opt.command << "\",\n  \"date\": \"" << date
-    << "\",\n  \"quick\": " << (opt.quick ? "true" : "false") << ",\n  \"cpu\": \"" << cpu_model()
-    << "\",\n  \"cores\": " << cv::getNumberOfCPUs() << ",\n  \"threads_used\": 1"
-    << ",\n  \"kernel\": \"" << u.sysname << ' ' << u.release << "\",\n  \"opencv\": \""
-    << CV_VERSION << "\",\n  \"compiler\": \"" << __VERSION__
-    << "\",\n  \"seeds_per_scene\": " << opt.seeds << ",\n  \"repetitions\": " << opt.reps
-    << ",\n  \"scenes\": " << scenes << ",\n  \"inconsistent_scenes\": " << inconsistent
-    << ",\n  \"leak_factor\": " << kLeakFactor << ",\n  \"params\": " << params_json(compared)
-    << ",\n  \"defaults\": " << params_json(defaults)
-    << ",\n  \"edges\": {\"detector\": \"canny\", \"low\": " << EdgeParams{}.low
-    << ", \"high\": " << EdgeParams{}.high << ", \"blur\": " << EdgeParams{}.blur << "}"
-    << ",\n  \"scene_model\": " << scene_model_json()
-    << ",\n  \"acquisition\": " << acquisition_json() << "\n}\n";
 }
 
 int run(const Options& opt) {

@@ -1,0 +1,137 @@
+// Per-pixel routines on whole frames against OpenCV's, each into buffers made once, as the
+// element calls them frame after frame: see cases.hpp.
+#include <opencv2/imgproc.hpp>
+
+#include "cases.hpp"
+#include "core/work_frame.hpp"
+#include "edges/box_blur.hpp"
+#include "edges/gray_conversion.hpp"
+#include "projtrack/canny.hpp"
+#include "projtrack/edge_detection.hpp"
+#include "projtrack/finder_params.hpp"
+
+namespace projtrack::handwritten {
+
+std::string same_pixels(const cv::Mat& a, const cv::Mat& b) {
+  if (a.size() != b.size() || a.type() != b.type()) return "no (different shapes)";
+  const int differ = cv::countNonZero(a.reshape(1) != b.reshape(1));
+  if (differ == 0) return "yes";
+  return "no (" + std::to_string(differ) + " of " + std::to_string(a.total() * a.channels()) +
+         " values differ)";
+}
+
+namespace {
+
+ImageView view(const cv::Mat& m) {
+  return ImageView(m.data, m.cols, m.rows, static_cast<std::ptrdiff_t>(m.step));
+}
+
+cv::Mat mat(const ImageView& v) {
+  return cv::Mat(v.height, v.width, CV_8U, const_cast<std::uint8_t*>(v.data),
+                 static_cast<std::size_t>(v.stride));
+}
+
+void edges(const Frame& f, const Effort& e, std::FILE* out) {
+  cv::Mat ours(f.height, f.width, CV_8U), theirs(f.height, f.width, CV_8U);
+  Row r{"3x3 box blur", "src/edges/box_blur.cpp box_blur3",
+        "cv::blur 3x3 BORDER_REPLICATE + BORDER_ISOLATED", f.name + " luma, whole frame", ""};
+  const Duel blur = duel(
+      [&] {
+        box_blur3(view(f.luma), {0, 0, f.width, f.height}, ours.data, ours.step);
+      },
+      [&] {
+        // Isolated: the luma plane is a view of the I420 buffer, whose chroma follows it.
+        cv::blur(f.luma, theirs, {3, 3}, {-1, -1}, cv::BORDER_REPLICATE | cv::BORDER_ISOLATED);
+      },
+      e.rounds, e.calls);
+  r.same = same_pixels(ours, theirs);
+  write_row(out, r, blur);
+
+  const EdgeParams ep;
+  const cv::Mat blurred = theirs.clone();
+  CannyDetector canny;
+  cv::Mat cv_edges(f.height, f.width, CV_8U);
+  ImageView our_edges;
+  r = {"Canny (3x3 Sobel, L1, hysteresis)", "src/edges/canny.cpp CannyDetector",
+       "cv::Canny 50/150 aperture 3 L1", f.name + " blurred luma, whole frame", ""};
+  const Duel c =
+      duel([&] { our_edges = canny.detect(view(blurred), ep.low, ep.high); },
+           [&] { cv::Canny(blurred, cv_edges, ep.low, ep.high, 3, false); }, e.rounds, e.calls);
+  r.same = same_pixels(mat(our_edges), cv_edges);
+  write_row(out, r, c);
+}
+
+void colour_conversions(const Frame& f, const Effort& e, std::FILE* out) {
+  const std::uint8_t* p = f.rgb.data;
+  const auto stride = static_cast<std::ptrdiff_t>(f.rgb.step);
+  cv::Mat gray(f.height, f.width, CV_8U), cv_gray(f.height, f.width, CV_8U);
+  Row r{"packed RGB to gray (BT.601)", "src/edges/gray_conversion.cpp packed_rgb_to_gray",
+        "cv::cvtColor RGB2GRAY", f.name + " RGB", ""};
+  const Duel g = duel(
+      [&] {
+        packed_rgb_to_gray(p, p + 1, p + 2, 3, stride, f.width, f.height, gray.data, gray.step);
+      },
+      [&] { cv::cvtColor(f.rgb, cv_gray, cv::COLOR_RGB2GRAY); }, e.rounds, e.calls);
+  r.same = same_pixels(gray, cv_gray);
+  write_row(out, r, g);
+
+  cv::Mat u(f.height / 2, f.width / 2, CV_8U), v(f.height / 2, f.width / 2, CV_8U);
+  cv::Mat ycrcb(f.height, f.width, CV_8UC3);
+  r = {"packed RGB to chroma (Cb, Cr at half resolution)",
+       "src/edges/gray_conversion.cpp packed_rgb_to_chroma",
+       "cv::cvtColor RGB2YCrCb (all three, full resolution)", f.name + " RGB",
+       "not compared (the library's is at full resolution)"};
+  const Duel c = duel(
+      [&] {
+        packed_rgb_to_chroma(p, p + 1, p + 2, 3, stride, f.width, f.height, u.data, v.data, u.step);
+      },
+      [&] { cv::cvtColor(f.rgb, ycrcb, cv::COLOR_RGB2YCrCb); }, e.rounds, e.calls);
+  write_row(out, r, c);
+
+  // YUY2: luma in every second byte (the chroma here neutral: only the luma is gathered).
+  cv::Mat yuy2(f.height, f.width, CV_8UC2, cv::Scalar(0, 128));
+  cv::insertChannel(f.luma, yuy2, 0);
+  cv::Mat luma(f.height, f.width, CV_8U), cv_luma(f.height, f.width, CV_8U);
+  r = {"packed YUV's luma into a plane", "src/edges/gray_conversion.cpp gather_component",
+       "cv::cvtColor YUV2GRAY_YUY2", f.name + " YUY2", ""};
+  const Duel y = duel(
+      [&] { gather_component(yuy2.data, 2, yuy2.step, f.width, f.height, luma.data, luma.step); },
+      [&] { cv::cvtColor(yuy2, cv_luma, cv::COLOR_YUV2GRAY_YUY2); }, e.rounds, e.calls);
+  r.same = same_pixels(luma, cv_luma);
+  write_row(out, r, y);
+}
+
+// The finder's work frame of the whole frame: luma block means, chroma the block's centre sample.
+void work_frame(const Frame& f, const Effort& e, std::FILE* out) {
+  const int s = work_scale(static_cast<double>(f.width) * f.height, FinderParams{}.work_pixels);
+  const Rect region{0, 0, (f.width + s - 1) / s, (f.height + s - 1) / s};
+  const ColorView color = f.color();
+  WorkFrame wf;
+  cv::Mat luma(region.height, region.width, CV_8U), u(region.height, region.width, CV_8U),
+      v(region.height, region.width, CV_8U);
+  Row r{"block means to a working scale (luma area, chroma nearest)",
+        "src/core/work_frame.cpp WorkFrame::build",
+        "cv::resize INTER_AREA (luma) + INTER_NEAREST (Cb, Cr)",
+        f.name + " I420 at the finder's scale " + std::to_string(s), ""};
+  const Duel d = duel([&] { wf.build(color, s, region); },
+                      [&] {
+                        cv::resize(f.luma, luma, luma.size(), 0, 0, cv::INTER_AREA);
+                        cv::resize(f.u, u, u.size(), 0, 0, cv::INTER_NEAREST);
+                        cv::resize(f.v, v, v.size(), 0, 0, cv::INTER_NEAREST);
+                      },
+                      e.rounds, e.calls);
+  r.same = "luma " + same_pixels(mat(wf.view().luma), luma);
+  write_row(out, r, d);
+}
+
+}  // namespace
+
+void pixel_duels(const std::vector<Frame>& frames, const Effort& e, std::FILE* out) {
+  for (const Frame& f : frames) {
+    edges(f, e, out);
+    colour_conversions(f, e, out);
+    work_frame(f, e, out);
+  }
+}
+
+}  // namespace projtrack::handwritten
