@@ -172,6 +172,41 @@ class Mask(unittest.TestCase):
         self.assertIsNone(tracker.track(gray_frame(162, 120), mask=False).mask)
 
 
+class MaskStart(unittest.TestCase):
+    """A start from a mask (OpenCV's convention: (H, W), non-zero on the object), with the flow
+    model that starts from exactly that silhouette, and with the others from its box."""
+
+    def test_the_flow_model_follows_the_given_silhouette(self):
+        tracker = projtrack.Tracker(model='flow')
+        first = disc(*path(0)).astype(np.uint8) * 255
+        self.assertTrue(tracker.init(bgr_frame(*path(0)), first))
+        for i in range(1, 12):
+            r = tracker.track(bgr_frame(*path(i)))
+            self.assertTrue(r.ok, f'frame {i}: {r.status} {r.detail}')
+            truth = disc(*path(i))
+            iou = np.logical_and(r.mask > 0, truth).sum() / np.logical_or(r.mask > 0, truth).sum()
+            self.assertGreater(iou, 0.85, f'frame {i}')
+        self.assertEqual(tracker.settings['model'], 'flow')
+
+    def test_track_takes_a_mask_array_and_every_model_starts_from_it(self):
+        for model in ('flow', 'appearance'):
+            tracker = projtrack.Tracker(model=model)
+            r = tracker.track(bgr_frame(*path(0)), mask=disc(*path(0)))  # a bool mask
+            self.assertTrue(r.ok, f'{model}: {r.status} {r.detail}')
+            self.assertAlmostEqual(r.area / (math.pi * R * R), 1, delta=0.15, msg=model)
+            self.assertEqual(r.mask.shape, (H, W))
+
+    def test_bad_masks(self):
+        tracker = projtrack.Tracker(model='flow')
+        frame = bgr_frame(*path(0))
+        with self.assertRaisesRegex(ValueError, 'mask: an \\(H, W\\)'):
+            tracker.init(frame, np.zeros((H, W + 1), np.uint8))
+        with self.assertRaisesRegex(ValueError, 'no pixel is set'):
+            tracker.init(frame, np.zeros((H, W), np.uint8))
+        with self.assertRaisesRegex(ValueError, 'not several'):
+            tracker.track(frame, point=path(0), mask=disc(*path(0)))
+
+
 class Layouts(unittest.TestCase):
     """Every layout of the same pixels gives the same results as a C-ordered array."""
 

@@ -1,0 +1,71 @@
+// The motion stage on generated pictures whose motion is known: a textured picture moved by a
+// whole number of pixels, and a silhouette carried along a known flow.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "motion/dense_flow.hpp"
+#include "motion/motion_evidence.hpp"
+
+namespace projtrack {
+namespace {
+
+cv::Mat texture(cv::Size size, int seed) {
+  cv::Mat noise(size, CV_8U);
+  cv::RNG rng(seed);
+  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
+  cv::GaussianBlur(noise, noise, {0, 0}, 2.0);
+  cv::normalize(noise, noise, 0, 255, cv::NORM_MINMAX);
+  return noise;
+}
+
+cv::Mat shifted(const cv::Mat& m, int dx, int dy) {
+  cv::Mat out;
+  const cv::Mat move = (cv::Mat_<double>(2, 3) << 1, 0, dx, 0, 1, dy);
+  cv::warpAffine(m, out, move, m.size(), cv::INTER_NEAREST, cv::BORDER_REFLECT);
+  return out;
+}
+
+TEST(DenseFlow, ReadsAWholePictureMoveAsTheMoveBack) {
+  const cv::Mat first = texture({320, 240}, 1);
+  DenseFlow flow;
+  EXPECT_FALSE(flow.compute(first));  // nothing to compare with yet
+  ASSERT_TRUE(flow.compute(shifted(first, 3, -2)));
+  const cv::Scalar mean = cv::mean(flow.backward()(cv::Rect(40, 40, 240, 160)));
+  EXPECT_NEAR(mean[0], -3, 0.5);  // each pixel came from 3 px to its left
+  EXPECT_NEAR(mean[1], 2, 0.5);
+  EXPECT_FALSE(flow.compute(texture({160, 120}, 2)));  // a new size: no flow
+}
+
+TEST(CarryAlongFlow, MovesTheSilhouetteWhereItsPixelsWent) {
+  cv::Mat last = cv::Mat::zeros(100, 100, CV_32F);
+  last(cv::Rect(20, 30, 10, 10)).setTo(1);
+  const cv::Mat flow(100, 100, CV_32FC2, cv::Scalar(-5, -4));  // came from 5 left, 4 up
+  cv::Mat map, prior;
+  carry_along_flow(last, flow, map, prior);
+  EXPECT_FLOAT_EQ(cv::sum(prior)[0], 100);
+  EXPECT_FLOAT_EQ(prior.at<float>(34, 25), 1);
+  EXPECT_FLOAT_EQ(prior.at<float>(30, 20), 0);
+}
+
+TEST(MotionEvidence, FavoursPixelsThatMoveWithTheObject) {
+  cv::Mat flow(60, 60, CV_32FC2, cv::Scalar(1, 0));  // the surroundings
+  flow(cv::Rect(20, 20, 20, 20)).setTo(cv::Scalar(-4, 3));  // the object
+  cv::Mat inside = cv::Mat::zeros(60, 60, CV_8U);
+  inside(cv::Rect(22, 22, 16, 16)).setTo(255);
+  const MotionSplit split = split_motion(flow, inside, 0.5);
+  ASSERT_TRUE(split.valid);
+  EXPECT_NEAR(split.object.x, -4, 1e-6);
+  EXPECT_NEAR(split.surroundings.x, 1, 1e-6);
+  cv::Mat log_odds = cv::Mat::zeros(60, 60, CV_32F);
+  add_motion_evidence(flow, split, 2.0, 1.0, log_odds);
+  EXPECT_FLOAT_EQ(log_odds.at<float>(21, 21), 2.0f);  // the object's edge, outside `inside`
+  EXPECT_FLOAT_EQ(log_odds.at<float>(5, 5), -2.0f);
+  // Motions closer than min_separation tell nothing apart.
+  cv::Mat none = cv::Mat::zeros(60, 60, CV_32F);
+  add_motion_evidence(flow, split, 2.0, 10.0, none);
+  EXPECT_EQ(cv::countNonZero(none), 0);
+}
+
+}  // namespace
+}  // namespace projtrack
