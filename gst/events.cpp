@@ -51,13 +51,15 @@ void on_src_event(GstProjtrack* self, GstEvent* event) {
     return;
   GST_OBJECT_LOCK(self);
   const double px = std::round(x), py = std::round(y);
-  const bool in_picture = px >= 0 && py >= 0 && px < self->state->locked.frame_width && py < self->state->locked.frame_height;
+  const bool in_picture = px >= 0 && py >= 0 && px < self->state->locked.frame_width &&
+                          py < self->state->locked.frame_height;
   const bool changed = button == 3 || in_picture;
   if (button == 3)
     set_inner_point_locked(self, -1, -1);
   else if (in_picture)
     set_inner_point_locked(self, static_cast<int>(px), static_cast<int>(py));
-  const int sx = self->state->locked.settings.seed_x, sy = self->state->locked.settings.seed_y;
+  const int sx = self->state->locked.settings.inner_point_x,
+            sy = self->state->locked.settings.inner_point_y;
   GST_OBJECT_UNLOCK(self);
   GST_INFO_OBJECT(self, "click (button %d) at %.1f, %.1f: %s inner point %d, %d", button, x, y,
                   changed ? "new" : "outside the picture, kept the", sx, sy);

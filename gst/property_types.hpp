@@ -1,6 +1,7 @@
 // What the type and range columns of the property table (property_table.def) mean: the GParamSpec
-// a row builds, and how a GValue of that type is read into its ElementSettings member and written back.
-// A type is a tag naming its Range, so that a row's `(min, max)` constructs the range of its type.
+// a row builds, and how a GValue of that type is read into its ElementSettings member and written
+// back. A type is a tag naming its Range, so that a row's `(min, max)` constructs the range of its
+// type.
 #pragma once
 
 #include <gst/gst.h>

@@ -72,9 +72,9 @@ void refuse_seed_locked(GstProjtrack* self, std::string why) {
 
 void set_inner_point_locked(GstProjtrack* self, int x, int y, bool awaiting_coordinate) {
   ElementSettings& s = self->state->locked.settings;
-  s.seed_x = x;
-  s.seed_y = y;
-  s.seed_box = {};
+  s.inner_point_x = x;
+  s.inner_point_y = y;
+  s.start_box = {};
   if (x >= 0 && y >= 0)
     self->state->locked.pending = SeedCommand::Seed;
   else if (!awaiting_coordinate)
@@ -83,17 +83,17 @@ void set_inner_point_locked(GstProjtrack* self, int x, int y, bool awaiting_coor
 
 void set_box_locked(GstProjtrack* self, const Rect& box) {
   ElementSettings& s = self->state->locked.settings;
-  s.seed_x = s.seed_y = -1;
-  s.seed_box = box.empty() ? Rect{} : box;
+  s.inner_point_x = s.inner_point_y = -1;
+  s.start_box = box.empty() ? Rect{} : box;
   self->state->locked.pending = box.empty() ? SeedCommand::Reset : SeedCommand::SeedBox;
 }
 
 void reseed_locked(GstProjtrack* self) {
-  if (!self->state->locked.settings.seed_box.empty())
-    set_box_locked(self, self->state->locked.settings.seed_box);
+  if (!self->state->locked.settings.start_box.empty())
+    set_box_locked(self, self->state->locked.settings.start_box);
   else
-    set_inner_point_locked(self, self->state->locked.settings.seed_x,
-                           self->state->locked.settings.seed_y);
+    set_inner_point_locked(self, self->state->locked.settings.inner_point_x,
+                           self->state->locked.settings.inner_point_y);
 }
 
 // By name, not by GParamSpec: the property table (properties.cpp) calls this file's handlers, and
@@ -106,20 +106,20 @@ void notify_inner_point(GstProjtrack* self) {
 // Each coordinate is applied as it is set: a new point seeds once both are >= 0.
 void set_inner_point_x(GstProjtrack* self, const GValue* value) {
   const int x = g_value_get_int(value);
-  set_inner_point_locked(self, x, self->state->locked.settings.seed_y, x >= 0);
+  set_inner_point_locked(self, x, self->state->locked.settings.inner_point_y, x >= 0);
 }
 
 void get_inner_point_x(GstProjtrack* self, GValue* value) {
-  g_value_set_int(value, self->state->locked.settings.seed_x);
+  g_value_set_int(value, self->state->locked.settings.inner_point_x);
 }
 
 void set_inner_point_y(GstProjtrack* self, const GValue* value) {
   const int y = g_value_get_int(value);
-  set_inner_point_locked(self, self->state->locked.settings.seed_x, y, y >= 0);
+  set_inner_point_locked(self, self->state->locked.settings.inner_point_x, y, y >= 0);
 }
 
 void get_inner_point_y(GstProjtrack* self, GValue* value) {
-  g_value_set_int(value, self->state->locked.settings.seed_y);
+  g_value_set_int(value, self->state->locked.settings.inner_point_y);
 }
 
 void set_start_box(GstProjtrack* self, const GValue* value) {
@@ -131,7 +131,7 @@ void set_start_box(GstProjtrack* self, const GValue* value) {
 }
 
 void get_start_box(GstProjtrack* self, GValue* value) {
-  set_box_value(value, self->state->locked.settings.seed_box);
+  set_box_value(value, self->state->locked.settings.start_box);
 }
 
 void get_current_inner_point_x(GstProjtrack* self, GValue* value) {
@@ -168,12 +168,12 @@ void track_box(GstProjtrack* self, gint x, gint y, gint width, gint height) {
 std::string apply_seed(Tracker& tracker, SeedCommand command, const ElementSettings& s, int width,
                        int height) {
   if (command == SeedCommand::Seed) {
-    tracker.seed({s.seed_x, s.seed_y});
+    tracker.seed({s.inner_point_x, s.inner_point_y});
   } else if (command == SeedCommand::SeedBox) {
     // Clipped to the picture (in 64 bits: no corner overflows); wholly outside it, not applied.
-    const Rect clipped = clip_to_frame(s.seed_box, width, height);
+    const Rect clipped = clip_to_frame(s.start_box, width, height);
     if (clipped.empty())
-      return "start-box " + box_text(s.seed_box) + " lies outside the " + std::to_string(width) +
+      return "start-box " + box_text(s.start_box) + " lies outside the " + std::to_string(width) +
              "x" + std::to_string(height) + " picture: not applied";
     tracker.seed_box(clipped);
   } else if (command == SeedCommand::Reset) {
@@ -190,17 +190,17 @@ void rescale_seeds_locked(GstProjtrack* self, int width, int height, int new_wid
   const auto scale = [](int v, double f) {
     return static_cast<int>(std::clamp(std::floor((v + 0.5) * f), 0.0, double(G_MAXINT)));
   };
-  if (s.seed_x >= 0 && s.seed_y >= 0) {
-    s.seed_x = scale(s.seed_x, sx);
-    s.seed_y = scale(s.seed_y, sy);
+  if (s.inner_point_x >= 0 && s.inner_point_y >= 0) {
+    s.inner_point_x = scale(s.inner_point_x, sx);
+    s.inner_point_y = scale(s.inner_point_y, sy);
   }
   // The part of the box in the old picture (the rest was never applied), scaled.
-  if (const Rect b = clip_to_frame(s.seed_box, width, height); !b.empty()) {
+  if (const Rect b = clip_to_frame(s.start_box, width, height); !b.empty()) {
     const int x0 = static_cast<int>(std::floor(b.x * sx)),
               y0 = static_cast<int>(std::floor(b.y * sy));
     const int x1 = static_cast<int>(std::ceil((static_cast<double>(b.x) + b.width) * sx));
     const int y1 = static_cast<int>(std::ceil((static_cast<double>(b.y) + b.height) * sy));
-    s.seed_box = {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
+    s.start_box = {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
   }
 }
 

@@ -35,8 +35,9 @@ struct ElementSettings : Settings {
   bool alpha_mask = false;  // the silhouette into the alpha channel, when the format has one
   bool post_messages = true;
   Updates updates = Updates::EveryFrame;
-  int seed_x = -1, seed_y = -1;  // the last inner point given (property, signal, click); -1 = none
-  Rect seed_box;                 // the last box given (start-box, track-box); empty = none
+  int inner_point_x = -1,
+      inner_point_y = -1;  // the last inner point given (property, signal, click); -1 = none
+  Rect start_box;          // the last box given (start-box, track-box); empty = none
 };
 
 // What the streaming thread must do to the track before the next frame.

@@ -32,7 +32,7 @@
 #include "machine.hpp"
 #include "method_list.hpp"
 #include "peers.hpp"
-#include "projtrack/canny.hpp"
+#include "edges/canny.hpp"
 #include "projtrack/tracker.hpp"
 #include "scene.hpp"
 #include "sequence.hpp"

@@ -66,7 +66,7 @@ class Tracking(unittest.TestCase):
         for make_frame in (gray_frame, bgr_frame):
             for model in ('appearance', 'edges'):
                 with self.subTest(frame=make_frame.__name__, model=model):
-                    self.follow(make_frame, model=model)
+                    self.follow(make_frame, object_model=model)
 
     def test_every_method(self):
         for method in projtrack.methods():
@@ -178,7 +178,7 @@ class Mask(unittest.TestCase):
         tracker = projtrack.Tracker()
         tracker.init(gray_frame(160, 120), (160, 120))
         self.assertIsNotNone(tracker.track(gray_frame(162, 120)).mask)
-        edges = projtrack.Tracker(model='edges')
+        edges = projtrack.Tracker(object_model='edges')
         edges.init(gray_frame(160, 120), (160, 120))
         r = edges.track(gray_frame(162, 120))
         self.assertTrue(r.ok)
@@ -275,7 +275,7 @@ class BadInput(unittest.TestCase):
                 ({'rays': 1024, 'recursion': 4}, ValueError, 'rays^recursion'),
                 ({'grid_size': 0}, ValueError, 'grid_size'),
                 ({'max_gap': 99}, ValueError, 'max_gap'),
-                ({'edge_low': 200, 'edge_high': 100}, ValueError, ''),
+                ({'edge_threshold_low': 200, 'edge_threshold_high': 100}, ValueError, ''),
                 ({'edge_low': float('nan')}, ValueError, ''),
                 ({'edge_threshold_low': -1}, ValueError, 'edge_threshold_low'),
                 ({'edge_detector': 'prewitt'}, ValueError, 'canny, sobel, input'),
