@@ -1,11 +1,13 @@
-// The element's instance, shared by the files that make up the element: which field is guarded by
-// what, and the per-stream state.
+// The element's instance, shared by the files that make up the element: what other threads set
+// (Locked, under the object lock), the per-stream state (Stream, the streaming thread's), and the
+// flag that interrupts a frame.
 #pragma once
 
 #include <gst/gst.h>
 #include <gst/video/video.h>
 
 #include <atomic>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -43,20 +45,31 @@ struct Stream {
   std::string last_warning;  // the conflict last reported by an element warning
 };
 
+// What the application's threads (properties, signals, clicks) and the streaming thread share:
+// every field under GST_OBJECT_LOCK.
+struct Locked {
+  ElementSettings settings;
+  SeedCommand pending = SeedCommand::None;
+  // Why a seed given was refused (a malformed box), for the streaming thread to warn of (it posts,
+  // never under the lock) and to say in the next message's detail.
+  std::string seed_note;
+  int frame_width = 0, frame_height = 0;  // the negotiated size, for clicks
+  // The tracker's inner point after the last frame (current-inner-point-x/y); -1 = none.
+  int tracked_x = -1, tracked_y = -1;
+};
+
+// The element's C++ state: made in instance init, freed in finalize.
+struct State {
+  Locked locked;                   // GST_OBJECT_LOCK
+  std::unique_ptr<Stream> stream;  // the streaming thread's; null outside set_info .. stop
+  // Set when the streaming thread must drop what it is doing (PAUSED → READY, a flush): the
+  // tracker polls it at its checkpoints; cleared when streaming starts again.
+  std::atomic<bool> interrupt{false};
+};
+
 }  // namespace projtrack::gst
 
 struct _GstProjtrack {
   GstVideoFilter parent;
-  projtrack::gst::Settings* settings;   // GST_OBJECT_LOCK
-  projtrack::gst::SeedCommand pending;  // GST_OBJECT_LOCK
-  // GST_OBJECT_LOCK: why a seed given was refused (a malformed box), for the streaming thread to
-  // warn of (it posts, never under the lock) and to say in the next message's detail.
-  std::string* seed_note;
-  int frame_width, frame_height;   // GST_OBJECT_LOCK: the negotiated size, for clicks
-  int tracked_x, tracked_y;        // GST_OBJECT_LOCK: the tracker's inner point after the
-                                   // last frame (current-inner-point-x/y); -1 = none
-  projtrack::gst::Stream* stream;  // streaming thread
-  // Set when the streaming thread must drop what it is doing (PAUSED → READY, a flush): the
-  // tracker polls it at its checkpoints; cleared when streaming starts again.
-  std::atomic<bool>* interrupt;
+  projtrack::gst::State* state;
 };

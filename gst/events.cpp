@@ -10,7 +10,7 @@
 namespace projtrack::gst {
 
 gboolean start(GstBaseTransform* trans) {
-  GST_PROJTRACK(trans)->interrupt->store(false);
+  GST_PROJTRACK(trans)->state->interrupt.store(false);
   return TRUE;
 }
 
@@ -20,14 +20,14 @@ gboolean start(GstBaseTransform* trans) {
 void on_state_change(GstProjtrack* self, GstStateChange transition) {
   if (transition == GST_STATE_CHANGE_PAUSED_TO_READY) {
     GST_DEBUG_OBJECT(self, "stopping: a frame in progress is interrupted");
-    self->interrupt->store(true);
+    self->state->interrupt.store(true);
   }
 }
 
 void on_sink_event(GstProjtrack* self, GstEvent* event) {
   if (GST_EVENT_TYPE(event) == GST_EVENT_FLUSH_START) {
     GST_DEBUG_OBJECT(self, "flushing: a frame in progress is interrupted");
-    self->interrupt->store(true);
+    self->state->interrupt.store(true);
   } else if (GST_EVENT_TYPE(event) == GST_EVENT_FLUSH_STOP) {
     // A flush is a seek (or a jump): the frames that follow show another moment, where the old
     // track's inner point means nothing. The track restarts from the seed given, or searches.
@@ -35,7 +35,7 @@ void on_sink_event(GstProjtrack* self, GstEvent* event) {
     GST_OBJECT_LOCK(self);
     reseed_locked(self);
     GST_OBJECT_UNLOCK(self);
-    self->interrupt->store(false);
+    self->state->interrupt.store(false);
   }
 }
 
@@ -51,13 +51,15 @@ void on_src_event(GstProjtrack* self, GstEvent* event) {
     return;
   GST_OBJECT_LOCK(self);
   const double px = std::round(x), py = std::round(y);
-  const bool in_picture = px >= 0 && py >= 0 && px < self->frame_width && py < self->frame_height;
+  const bool in_picture = px >= 0 && py >= 0 && px < self->state->locked.frame_width &&
+                          py < self->state->locked.frame_height;
   const bool changed = button == 3 || in_picture;
   if (button == 3)
     set_inner_point_locked(self, -1, -1);
   else if (in_picture)
     set_inner_point_locked(self, static_cast<int>(px), static_cast<int>(py));
-  const int sx = self->settings->seed_x, sy = self->settings->seed_y;
+  const int sx = self->state->locked.settings.inner_point_x,
+            sy = self->state->locked.settings.inner_point_y;
   GST_OBJECT_UNLOCK(self);
   GST_INFO_OBJECT(self, "click (button %d) at %.1f, %.1f: %s inner point %d, %d", button, x, y,
                   changed ? "new" : "outside the picture, kept the", sx, sy);

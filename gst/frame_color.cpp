@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "edges/gray_conversion.hpp"
+#include "projtrack/color_conversion.hpp"
 
 namespace projtrack::gst {
 
@@ -93,23 +93,12 @@ ColorView frame_color(const GstVideoFrame* frame, std::vector<std::uint8_t>& buf
     return {ImageView(buffer.data(), width, height, width), chroma_in_place(frame), {}};
   }
   // Packed RGB: components 0, 1, 2 are R, G, B whatever their order in memory.
-  const std::size_t luma = static_cast<std::size_t>(width) * height;
-  const int cw = (width + 1) / 2, ch = (height + 1) / 2;
-  const std::size_t chroma = static_cast<std::size_t>(cw) * ch;
-  buffer.resize(luma + 2 * chroma);
   const auto comp = [&](int i) {
     return static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_COMP_DATA(frame, i));
   };
   const int pstride = GST_VIDEO_FRAME_COMP_PSTRIDE(frame, 0);
   const std::ptrdiff_t stride = GST_VIDEO_FRAME_COMP_STRIDE(frame, 0);
-  packed_rgb_to_gray(comp(0), comp(1), comp(2), pstride, stride, width, height, buffer.data(),
-                     width);
-  packed_rgb_to_chroma(comp(0), comp(1), comp(2), pstride, stride, width, height,
-                       buffer.data() + luma, buffer.data() + luma + chroma, cw);
-  ColorView c;
-  c.luma = ImageView(buffer.data(), width, height, width);
-  c.chroma = {buffer.data() + luma, buffer.data() + luma + chroma, cw, 1, 1, 1};
-  return c;
+  return packed_rgb_to_color(comp(0), comp(1), comp(2), pstride, stride, width, height, buffer);
 }
 
 }  // namespace projtrack::gst

@@ -82,6 +82,7 @@
 #include "gstprojtrack.h"
 
 #include "element.hpp"
+#include "enum_types.h"
 #include "events.hpp"
 #include "meta.hpp"
 #include "properties.hpp"
@@ -91,7 +92,6 @@
 GST_DEBUG_CATEGORY(gst_projtrack_debug);
 
 using projtrack::gst::SeedCommand;
-using projtrack::gst::Settings;
 
 enum { SIGNAL_TRACK_POINT, SIGNAL_TRACK_BOX, SIGNAL_RESET, N_SIGNALS };
 
@@ -134,21 +134,12 @@ static void gst_projtrack_before_transform(GstBaseTransform* trans, GstBuffer* b
 
 static void gst_projtrack_finalize(GObject* object) {
   auto* self = GST_PROJTRACK(object);
-  delete self->stream;
-  delete self->settings;
-  delete self->interrupt;
-  delete self->seed_note;
+  delete self->state;
   G_OBJECT_CLASS(gst_projtrack_parent_class)->finalize(object);
 }
 
 static void gst_projtrack_init(GstProjtrack* self) {
-  self->settings = new Settings;
-  self->pending = SeedCommand::None;
-  self->frame_width = self->frame_height = 0;
-  self->tracked_x = self->tracked_y = -1;
-  self->stream = nullptr;
-  self->interrupt = new std::atomic<bool>(false);
-  self->seed_note = new std::string;
+  self->state = new projtrack::gst::State;
   // Metadata needs a writable buffer: never pass buffers through untouched.
   gst_base_transform_set_passthrough(GST_BASE_TRANSFORM(self), FALSE);
   // GAP buffers go on as GAP buffers (transform_ip leaves them alone).

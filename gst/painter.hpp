@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <string>
 
-#include "edges/gray_conversion.hpp"
 #include "font.hpp"
+#include "projtrack/color_conversion.hpp"
 #include "projtrack/geometry.hpp"
 
 namespace projtrack::gst {

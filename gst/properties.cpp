@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "element.hpp"
+#include "enum_types.h"
 #include "property_types.hpp"
 #include "seeds.hpp"
 
@@ -44,7 +45,7 @@ bool iterates(const MethodInfo& m) { return m.iterative; }
 const char* method_blurb() {
   return g_intern_string((std::string("How the object's centroid and area are measured inside "
                                       "its outline: rays cast from the inner point, or a fill (") +
-                          method_info(kDefaultMethod).nick +
+                          nick_of(ElementSettings{}.method) +
                           ", the default, does not leak through small breaks in the outline)")
                              .c_str());
 }
@@ -52,7 +53,7 @@ const char* method_blurb() {
 }  // namespace
 
 void install_properties(GObjectClass* klass) {
-  const Settings defaults;
+  const ElementSettings defaults;
 #define PROJTRACK_PROPERTY(id, name, nick, type, range, def, flags, access, blurb) \
   specs[PROP_##id] = param_spec(name, nick, blurb, type::Range range, def,         \
                                 static_cast<GParamFlags>((flags) | G_PARAM_STATIC_STRINGS));
@@ -60,8 +61,6 @@ void install_properties(GObjectClass* klass) {
 #undef PROJTRACK_PROPERTY
   g_object_class_install_properties(klass, N_PROPERTIES, specs);
 }
-
-GParamSpec* property_spec(PropertyId id) { return specs[id]; }
 
 // What a row's `access` column does in each direction, with `Type` the row's type: SET_ in
 // set_property, GET_ in get_property. GObject never sets a read-only property.
@@ -83,7 +82,7 @@ GParamSpec* property_spec(PropertyId id) { return specs[id]; }
 void set_property(GObject* object, guint prop_id, const GValue* value, GParamSpec* pspec) {
   auto* self = GST_PROJTRACK(object);
   GST_OBJECT_LOCK(self);
-  Settings& s = *self->settings;
+  ElementSettings& s = self->state->locked.settings;
   switch (prop_id) {
 #define PROJTRACK_PROPERTY(id, name, nick, type, range, def, flags, access, blurb) \
   PROJTRACK_PROPERTY_CASE(SET_, id, type, access)
@@ -99,7 +98,7 @@ void set_property(GObject* object, guint prop_id, const GValue* value, GParamSpe
 void get_property(GObject* object, guint prop_id, GValue* value, GParamSpec* pspec) {
   auto* self = GST_PROJTRACK(object);
   GST_OBJECT_LOCK(self);
-  const Settings& s = *self->settings;
+  const ElementSettings& s = self->state->locked.settings;
   switch (prop_id) {
 #define PROJTRACK_PROPERTY(id, name, nick, type, range, def, flags, access, blurb) \
   PROJTRACK_PROPERTY_CASE(GET_, id, type, access)

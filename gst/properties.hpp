@@ -17,9 +17,6 @@ enum PropertyId : guint {
 // Builds every row's GParamSpec and installs them on the element's class.
 void install_properties(GObjectClass* klass);
 
-// The installed GParamSpec of `id` (for g_object_notify_by_pspec).
-GParamSpec* property_spec(PropertyId id);
-
 void set_property(GObject* object, guint prop_id, const GValue* value, GParamSpec* pspec);
 void get_property(GObject* object, guint prop_id, GValue* value, GParamSpec* pspec);
 

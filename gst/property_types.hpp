@@ -1,6 +1,7 @@
 // What the type and range columns of the property table (property_table.def) mean: the GParamSpec
-// a row builds, and how a GValue of that type is read into its Settings member and written back.
-// A type is a tag naming its Range, so that a row's `(min, max)` constructs the range of its type.
+// a row builds, and how a GValue of that type is read into its ElementSettings member and written
+// back. A type is a tag naming its Range, so that a row's `(min, max)` constructs the range of its
+// type.
 #pragma once
 
 #include <gst/gst.h>
@@ -82,7 +83,7 @@ inline GParamSpec* param_spec(const char* name, const char* nick, const char* bl
   return gst_param_spec_array(name, nick, blurb, coordinate, flags);
 }
 
-// A GValue of the row's type into its Settings member, and back: the member's own C++ type
+// A GValue of the row's type into its ElementSettings member, and back: the member's own C++ type
 // (an int for a uint property, the library's enum for an enum one).
 inline void from_value(Uint, const GValue* v, int& member) {
   member = static_cast<int>(g_value_get_uint(v));

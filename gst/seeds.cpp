@@ -9,7 +9,6 @@
 #include <utility>
 
 #include "element.hpp"
-#include "properties.hpp"
 
 namespace projtrack::gst {
 
@@ -66,58 +65,61 @@ void set_box_value(GValue* array, const Rect& box) {
 // A malformed seed is refused: the track in hand goes on, and the streaming thread says why.
 void refuse_seed_locked(GstProjtrack* self, std::string why) {
   GST_WARNING_OBJECT(self, "%s", why.c_str());
-  *self->seed_note = std::move(why);
+  self->state->locked.seed_note = std::move(why);
 }
 
 }  // namespace
 
 void set_inner_point_locked(GstProjtrack* self, int x, int y, bool awaiting_coordinate) {
-  Settings& s = *self->settings;
-  s.seed_x = x;
-  s.seed_y = y;
-  s.seed_box = {};
+  ElementSettings& s = self->state->locked.settings;
+  s.inner_point_x = x;
+  s.inner_point_y = y;
+  s.start_box = {};
   if (x >= 0 && y >= 0)
-    self->pending = SeedCommand::Seed;
+    self->state->locked.pending = SeedCommand::Seed;
   else if (!awaiting_coordinate)
-    self->pending = SeedCommand::Reset;
+    self->state->locked.pending = SeedCommand::Reset;
 }
 
 void set_box_locked(GstProjtrack* self, const Rect& box) {
-  Settings& s = *self->settings;
-  s.seed_x = s.seed_y = -1;
-  s.seed_box = box.empty() ? Rect{} : box;
-  self->pending = box.empty() ? SeedCommand::Reset : SeedCommand::SeedBox;
+  ElementSettings& s = self->state->locked.settings;
+  s.inner_point_x = s.inner_point_y = -1;
+  s.start_box = box.empty() ? Rect{} : box;
+  self->state->locked.pending = box.empty() ? SeedCommand::Reset : SeedCommand::SeedBox;
 }
 
 void reseed_locked(GstProjtrack* self) {
-  if (!self->settings->seed_box.empty())
-    set_box_locked(self, self->settings->seed_box);
+  if (!self->state->locked.settings.start_box.empty())
+    set_box_locked(self, self->state->locked.settings.start_box);
   else
-    set_inner_point_locked(self, self->settings->seed_x, self->settings->seed_y);
+    set_inner_point_locked(self, self->state->locked.settings.inner_point_x,
+                           self->state->locked.settings.inner_point_y);
 }
 
+// By name, not by GParamSpec: the property table (properties.cpp) calls this file's handlers, and
+// this file does not call back into it. A seed changes rarely; the look-up by name costs nothing.
 void notify_inner_point(GstProjtrack* self) {
-  for (PropertyId prop : {PROP_INNER_POINT_X, PROP_INNER_POINT_Y, PROP_START_BOX})
-    g_object_notify_by_pspec(G_OBJECT(self), property_spec(prop));
+  for (const char* name : {"inner-point-x", "inner-point-y", "start-box"})
+    g_object_notify(G_OBJECT(self), name);
 }
 
 // Each coordinate is applied as it is set: a new point seeds once both are >= 0.
 void set_inner_point_x(GstProjtrack* self, const GValue* value) {
   const int x = g_value_get_int(value);
-  set_inner_point_locked(self, x, self->settings->seed_y, x >= 0);
+  set_inner_point_locked(self, x, self->state->locked.settings.inner_point_y, x >= 0);
 }
 
 void get_inner_point_x(GstProjtrack* self, GValue* value) {
-  g_value_set_int(value, self->settings->seed_x);
+  g_value_set_int(value, self->state->locked.settings.inner_point_x);
 }
 
 void set_inner_point_y(GstProjtrack* self, const GValue* value) {
   const int y = g_value_get_int(value);
-  set_inner_point_locked(self, self->settings->seed_x, y, y >= 0);
+  set_inner_point_locked(self, self->state->locked.settings.inner_point_x, y, y >= 0);
 }
 
 void get_inner_point_y(GstProjtrack* self, GValue* value) {
-  g_value_set_int(value, self->settings->seed_y);
+  g_value_set_int(value, self->state->locked.settings.inner_point_y);
 }
 
 void set_start_box(GstProjtrack* self, const GValue* value) {
@@ -129,15 +131,15 @@ void set_start_box(GstProjtrack* self, const GValue* value) {
 }
 
 void get_start_box(GstProjtrack* self, GValue* value) {
-  set_box_value(value, self->settings->seed_box);
+  set_box_value(value, self->state->locked.settings.start_box);
 }
 
 void get_current_inner_point_x(GstProjtrack* self, GValue* value) {
-  g_value_set_int(value, self->tracked_x);
+  g_value_set_int(value, self->state->locked.tracked_x);
 }
 
 void get_current_inner_point_y(GstProjtrack* self, GValue* value) {
-  g_value_set_int(value, self->tracked_y);
+  g_value_set_int(value, self->state->locked.tracked_y);
 }
 
 void track_point(GstProjtrack* self, gint x, gint y) {
@@ -163,15 +165,15 @@ void track_box(GstProjtrack* self, gint x, gint y, gint width, gint height) {
   if (!refused) notify_inner_point(self);
 }
 
-std::string apply_seed(Tracker& tracker, SeedCommand command, const Settings& s, int width,
+std::string apply_seed(Tracker& tracker, SeedCommand command, const ElementSettings& s, int width,
                        int height) {
   if (command == SeedCommand::Seed) {
-    tracker.seed({s.seed_x, s.seed_y});
+    tracker.seed({s.inner_point_x, s.inner_point_y});
   } else if (command == SeedCommand::SeedBox) {
     // Clipped to the picture (in 64 bits: no corner overflows); wholly outside it, not applied.
-    const Rect clipped = clip_to_frame(s.seed_box, width, height);
+    const Rect clipped = clip_to_frame(s.start_box, width, height);
     if (clipped.empty())
-      return "start-box " + box_text(s.seed_box) + " lies outside the " + std::to_string(width) +
+      return "start-box " + box_text(s.start_box) + " lies outside the " + std::to_string(width) +
              "x" + std::to_string(height) + " picture: not applied";
     tracker.seed_box(clipped);
   } else if (command == SeedCommand::Reset) {
@@ -182,23 +184,23 @@ std::string apply_seed(Tracker& tracker, SeedCommand command, const Settings& s,
 
 void rescale_seeds_locked(GstProjtrack* self, int width, int height, int new_width,
                           int new_height) {
-  Settings& s = *self->settings;
+  ElementSettings& s = self->state->locked.settings;
   const double sx = static_cast<double>(new_width) / width;
   const double sy = static_cast<double>(new_height) / height;
   const auto scale = [](int v, double f) {
     return static_cast<int>(std::clamp(std::floor((v + 0.5) * f), 0.0, double(G_MAXINT)));
   };
-  if (s.seed_x >= 0 && s.seed_y >= 0) {
-    s.seed_x = scale(s.seed_x, sx);
-    s.seed_y = scale(s.seed_y, sy);
+  if (s.inner_point_x >= 0 && s.inner_point_y >= 0) {
+    s.inner_point_x = scale(s.inner_point_x, sx);
+    s.inner_point_y = scale(s.inner_point_y, sy);
   }
   // The part of the box in the old picture (the rest was never applied), scaled.
-  if (const Rect b = clip_to_frame(s.seed_box, width, height); !b.empty()) {
+  if (const Rect b = clip_to_frame(s.start_box, width, height); !b.empty()) {
     const int x0 = static_cast<int>(std::floor(b.x * sx)),
               y0 = static_cast<int>(std::floor(b.y * sy));
     const int x1 = static_cast<int>(std::ceil((static_cast<double>(b.x) + b.width) * sx));
     const int y1 = static_cast<int>(std::ceil((static_cast<double>(b.y) + b.height) * sy));
-    s.seed_box = {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
+    s.start_box = {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
   }
 }
 

@@ -48,7 +48,7 @@ void reset(GstProjtrack* self);
 // The streaming thread applies `command` (the seed given last, in `s`) before a width × height
 // frame. A box is clipped to the picture; one wholly outside it is not applied, and the returned
 // text says so (empty when all went well).
-std::string apply_seed(Tracker& tracker, SeedCommand command, const Settings& s, int width,
+std::string apply_seed(Tracker& tracker, SeedCommand command, const ElementSettings& s, int width,
                        int height);
 
 }  // namespace projtrack::gst

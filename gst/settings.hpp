@@ -2,24 +2,20 @@
 // reads it: one copy per frame, taken under the object lock.
 #pragma once
 
-#include "projtrack/edge_detection.hpp"
 #include "projtrack/geometry.hpp"
-#include "projtrack/method.hpp"
-#include "projtrack/params.hpp"
-#include "projtrack/tracker_params.hpp"
+#include "projtrack/names.hpp"
+#include "projtrack/settings.hpp"
 
 namespace projtrack::gst {
 
-inline constexpr Method kDefaultMethod = Method::GapTolerantFilling;
-
-// Which frames post a projtrack message (as facedetect's `updates`).
+// Which frames post a projtrack message (as facedetect's `updates`). Names: updates_table.def.
 enum class Updates {
   EveryFrame,  // every frame
   OnChange,    // the status changes, an object is acquired, or a gesture is found
   None,        // never
 };
 
-// What the overlay draws (draw-flags): a bit each, all by default.
+// What the overlay draws (draw-flags): a bit each, all by default. Names: draw_flags_table.def.
 enum DrawFlag : unsigned {
   kDrawStatus = 1u << 0,      // the text panel: the status and why, x, y, depth, the method
   kDrawOutline = 1u << 1,     // the silhouette's outline
@@ -30,19 +26,18 @@ enum DrawFlag : unsigned {
   kDrawAll = (1u << 6) - 1,
 };
 
-// Everything a user can set. A default-constructed Settings holds every property's default.
-struct Settings {
-  Method method = kDefaultMethod;
-  Params params;
-  EdgeParams edges;
-  TrackerParams tracker;
+// Everything a user can set: the library's settings bundle (its defaults are the properties'),
+// and what only the element has. A default-constructed ElementSettings holds every property's
+// default.
+struct ElementSettings : Settings {
   bool draw = false;
   unsigned draw_flags = kDrawAll;
   bool alpha_mask = false;  // the silhouette into the alpha channel, when the format has one
   bool post_messages = true;
   Updates updates = Updates::EveryFrame;
-  int seed_x = -1, seed_y = -1;  // the last inner point given (property, signal, click); -1 = none
-  Rect seed_box;                 // the last box given (start-box, track-box); empty = none
+  int inner_point_x = -1,
+      inner_point_y = -1;  // the last inner point given (property, signal, click); -1 = none
+  Rect start_box;          // the last box given (start-box, track-box); empty = none
 };
 
 // What the streaming thread must do to the track before the next frame.

@@ -25,12 +25,12 @@ namespace {
 
 // Runs edges + estimator on one mapped frame (after the seed given, if any: why it could not be
 // applied goes into `note`), and draws and writes the alpha when asked.
-TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
+TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const ElementSettings& s,
                     SeedCommand command, std::string& note) {
-  Stream& st = *self->stream;
+  Stream& st = *self->state->stream;
   note = apply_seed(st.tracker, command, s, st.width, st.height);
-  EdgeParams edge_params = s.edges;
-  edge_params.input_black_level = st.black_level;
+  Settings bundle = s;  // the library's part of the element's settings
+  bundle.edges.input_black_level = st.black_level;
   const ColorView color = frame_color(frame, st.converted);
   // What the method did is recorded only when it is drawn (rays may number 131 072).
   const bool traced = s.draw && (s.draw_flags & (kDrawGrid | kDrawOutline));
@@ -42,7 +42,7 @@ TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
                        : static_cast<double>(st.frames) / kAssumedFrameRate;
   ++st.frames;
   // The tracker computes the edges itself: while tracking, only around the object.
-  TrackResult r = st.tracker.track(color, edge_params, t, s.method, s.params, s.tracker, trace);
+  TrackResult r = st.tracker.track(color, t, bundle, trace);
   const SilhouetteMask silhouette =
       has_features(r.status) ? st.tracker.silhouette() : SilhouetteMask{};
   st.outline = outline_polygons(silhouette);
@@ -60,10 +60,10 @@ TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const Settings& s,
 // why. One element warning per reason and caps; the debug log has every frame.
 TrackResult unread_frame(GstProjtrack* self, const FrameMapping& mapping, SeedCommand command) {
   GST_OBJECT_LOCK(self);
-  if (self->pending == SeedCommand::None) self->pending = command;
+  if (self->state->locked.pending == SeedCommand::None) self->state->locked.pending = command;
   GST_OBJECT_UNLOCK(self);
   GST_DEBUG_OBJECT(self, "buffer not read (%s): %s", mapping.reason, mapping.detail.c_str());
-  if (self->stream->layout_warnings.insert(mapping.reason).second) {
+  if (self->state->stream->layout_warnings.insert(mapping.reason).second) {
     GST_ELEMENT_WARNING(self, STREAM, FORMAT,
                         ("Video buffer not read (%s): %s", mapping.reason, mapping.detail.c_str()),
                         ("such buffers pass through untouched, with status=invalid-image"));
@@ -71,7 +71,7 @@ TrackResult unread_frame(GstProjtrack* self, const FrameMapping& mapping, SeedCo
   TrackResult r;
   r.status = TrackStatus::InvalidImage;
   r.detail = mapping.detail;
-  r.inner_point = self->stream->tracker.inner_point();  // the track waits where it was
+  r.inner_point = self->state->stream->tracker.inner_point();  // the track waits where it was
   return r;
 }
 
@@ -101,12 +101,12 @@ void report_status(GstProjtrack* self, Stream& st, const TrackResult& r) {
 gboolean set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info, GstCaps*,
                   GstVideoInfo*) {
   auto* self = GST_PROJTRACK(filter);
-  const bool first = !self->stream;
+  const bool first = !self->state->stream;
   if (first) {
-    self->stream = new Stream;
-    self->stream->tracker.set_stop_flag(self->interrupt);
+    self->state->stream = std::make_unique<Stream>();
+    self->state->stream->tracker.set_stop_flag(&self->state->interrupt);
   }
-  Stream& st = *self->stream;
+  Stream& st = *self->state->stream;
   const int width = GST_VIDEO_INFO_WIDTH(in_info), height = GST_VIDEO_INFO_HEIGHT(in_info);
   const GstVideoColorimetry& colours = in_info->colorimetry;
   st.black_level =
@@ -116,8 +116,8 @@ gboolean set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info, GstCa
   const bool recoloured = !first && (GST_VIDEO_INFO_FORMAT(in_info) != st.format ||
                                      colours.range != st.range || colours.matrix != st.matrix);
   GST_OBJECT_LOCK(self);
-  self->frame_width = width;
-  self->frame_height = height;
+  self->state->locked.frame_width = width;
+  self->state->locked.frame_height = height;
   st.element_name = GST_OBJECT_NAME(self);  // for the metas: the name is fixed while streaming
   if (first)
     reseed_locked(self);
@@ -144,11 +144,10 @@ gboolean set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info, GstCa
 
 gboolean stop(GstBaseTransform* trans) {
   auto* self = GST_PROJTRACK(trans);
-  delete self->stream;
-  self->stream = nullptr;
+  self->state->stream.reset();
   GST_OBJECT_LOCK(self);
   reseed_locked(self);
-  self->tracked_x = self->tracked_y = -1;
+  self->state->locked.tracked_x = self->state->locked.tracked_y = -1;
   GST_OBJECT_UNLOCK(self);
   return TRUE;
 }
@@ -164,17 +163,17 @@ void warn_of_seed(GstProjtrack* self, const std::string& note) {
 
 // After the frame: the status logged and warned, the tracker's inner point published, and the
 // message posted (after every lock is released), with `note` (a seed refused) in its detail.
-void report(GstProjtrack* self, GstBuffer* buffer, const Settings& s, const TrackResult& r,
+void report(GstProjtrack* self, GstBuffer* buffer, const ElementSettings& s, const TrackResult& r,
             const FrameMapping& mapping, std::string note,
             std::chrono::steady_clock::time_point start) {
-  Stream& st = *self->stream;
+  Stream& st = *self->state->stream;
   report_status(self, st, r);
   if (r.gesture != Gesture::None)
     GST_INFO_OBJECT(self, "gesture: %s", gesture_name(r.gesture).data());
   const std::optional<Point2i>& inner = r.inner_point;
   GST_OBJECT_LOCK(self);
-  self->tracked_x = inner ? inner->x : -1;
-  self->tracked_y = inner ? inner->y : -1;
+  self->state->locked.tracked_x = inner ? inner->x : -1;
+  self->state->locked.tracked_y = inner ? inner->y : -1;
   GST_OBJECT_UNLOCK(self);
   if (!(s.post_messages && worth_posting(s.updates, r, st.last_posted))) return;
   const auto ns =
@@ -197,7 +196,7 @@ void report(GstProjtrack* self, GstBuffer* buffer, const Settings& s, const Trac
 GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
   auto* self = GST_PROJTRACK(trans);
   auto* filter = GST_VIDEO_FILTER(trans);
-  if (!filter->negotiated || !self->stream) {
+  if (!filter->negotiated || !self->state->stream) {
     GST_ELEMENT_ERROR(self, CORE, NEGOTIATION, (nullptr), ("no format negotiated"));
     return GST_FLOW_NOT_NEGOTIATED;
   }
@@ -208,9 +207,9 @@ GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
   const auto start = std::chrono::steady_clock::now();
 
   GST_OBJECT_LOCK(self);
-  const Settings s = *self->settings;
-  const SeedCommand command = std::exchange(self->pending, SeedCommand::None);
-  std::string note = std::exchange(*self->seed_note, std::string());
+  const ElementSettings s = self->state->locked.settings;
+  const SeedCommand command = std::exchange(self->state->locked.pending, SeedCommand::None);
+  std::string note = std::exchange(self->state->locked.seed_note, std::string());
   GST_OBJECT_UNLOCK(self);
   warn_of_seed(self, note);
 
@@ -233,7 +232,7 @@ GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
   warn_of_seed(self, not_applied);
   if (!not_applied.empty()) note += (note.empty() ? "" : "; ") + not_applied;
 
-  Stream& st = *self->stream;
+  Stream& st = *self->state->stream;
   if (r.acquired) st.track_id = next_track_id();
   if (!mapping.ok()) st.outline.clear();
   if (has_features(r.status)) {

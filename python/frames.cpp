@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "edges/gray_conversion.hpp"
+#include "projtrack/color_conversion.hpp"
 
 namespace projtrack::python {
 
@@ -64,17 +64,8 @@ ColorView FrameReader::read(const py::handle& obj) {
     return c;
   }
   // BGR: the library's packed-RGB conversion, as the element's for BGR and BGRx caps.
-  const std::size_t luma = static_cast<std::size_t>(s.width) * s.height;
-  const int cw = (s.width + 1) / 2, ch = (s.height + 1) / 2;
-  const std::size_t chroma = static_cast<std::size_t>(cw) * ch;
-  planes_.resize(luma + 2 * chroma);
-  packed_rgb_to_gray(data + 2, data + 1, data, s.channels, stride, s.width, s.height,
-                     planes_.data(), s.width);
-  packed_rgb_to_chroma(data + 2, data + 1, data, s.channels, stride, s.width, s.height,
-                       planes_.data() + luma, planes_.data() + luma + chroma, cw);
-  c.luma = ImageView(planes_.data(), s.width, s.height, s.width);
-  c.chroma = {planes_.data() + luma, planes_.data() + luma + chroma, cw, 1, 1, 1};
-  return c;
+  return packed_rgb_to_color(data + 2, data + 1, data, s.channels, stride, s.width, s.height,
+                             planes_);
 }
 
 }  // namespace projtrack::python

@@ -119,7 +119,7 @@ Result PyTracker::track(const py::handle& frame, const Where& where, const py::o
   }
   const ColorView view = reader_.read(frame);
   const int w = view.luma.width, h = view.luma.height;
-  double seconds = static_cast<double>(where.restart ? 0 : frames_.load()) / settings_.fps;
+  double seconds = static_cast<double>(where.restart ? 0 : frames_.load()) / options_.fps;
   if (!t.is_none()) {
     seconds = number(t, "t");
     if (!std::isfinite(seconds)) throw py::value_error("t: a finite number of seconds expected");
@@ -132,8 +132,7 @@ Result PyTracker::track(const py::handle& frame, const Where& where, const py::o
   bool has_mask = false;
   {
     py::gil_scoped_release nogil;
-    const Settings& s = settings_;
-    res.r = tracker_.track(view, s.edges, seconds, s.method, s.params, s.tracker);
+    res.r = tracker_.track(view, seconds, options_.settings);
     if (with_mask) has_mask = tracker_.silhouette(mask.mutable_data(), w, h, w);
     ++frames_;
   }

@@ -27,7 +27,7 @@ struct Where {
 
 class PyTracker {
  public:
-  explicit PyTracker(const Settings& s) : settings_(s) {}
+  explicit PyTracker(const TrackerOptions& o) : options_(o) {}
 
   // The library's frame: seeds from `where` when given, tracks `frame` at `t` seconds (None:
   // frames counted at the settings' fps); the silhouette's mask when `with_mask`.
@@ -39,11 +39,11 @@ class PyTracker {
   pybind11::tuple update(const pybind11::handle& frame);
   void reset();
 
-  const Settings& settings() const { return settings_; }
+  const TrackerOptions& options() const { return options_; }
   long frames() const { return frames_; }
 
  private:
-  Settings settings_;
+  TrackerOptions options_;
   Tracker tracker_;
   FrameReader reader_;
   std::mutex mutex_;  // one frame at a time: track() runs without the GIL

@@ -1,90 +1,113 @@
 #include "settings.hpp"
 
-#include <pybind11/pybind11.h>
-
 #include <cmath>
-#include <optional>
+#include <set>
+#include <sstream>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "projtrack/names.hpp"
 
 namespace projtrack::python {
 
 namespace py = pybind11;
 
-const char* model_name(ObjectModelKind k) {
-  switch (k) {
-    case ObjectModelKind::Edges:
-      return "edges";
-    case ObjectModelKind::Flow:
-      return "flow";
-    case ObjectModelKind::Appearance:
-      break;
-  }
-  return "appearance";
-}
-
-const char* acquisition_name(Acquisition a) {
-  switch (a) {
-    case Acquisition::Manual:
-      return "manual";
-    case Acquisition::Center:
-      return "center";
-    case Acquisition::Auto:
-      return "auto";
-  }
-  return "manual";
-}
-
-std::string method_names() {
-  std::string names;
-  for (const MethodInfo& info : kMethods)
-    names += (names.empty() ? "" : ", ") + std::string(info.nick);
-  return names;
+Settings python_defaults() {
+  Settings s;
+  s.tracker.acquisition = Acquisition::Manual;
+  return s;
 }
 
 namespace {
 
-template <class Enum, std::size_t N>
-std::optional<Enum> by_name(const std::string& name, const Enum (&values)[N],
-                            const char* (*name_of)(Enum)) {
-  for (Enum v : values)
-    if (name == name_of(v)) return v;
-  return std::nullopt;
+// The keywords' names before they were the element's: still taken, never given back.
+constexpr std::pair<std::string_view, std::string_view> kFormerNames[] = {
+    {"model", "object_model"},
+    {"edge_low", "edge_threshold_low"},
+    {"edge_high", "edge_threshold_high"},
+};
+
+std::string type_name(const py::handle& v) {
+  return std::string(py::str(v.get_type().attr("__name__")));
 }
 
-[[noreturn]] void bad(const std::string& what) { throw py::value_error(what); }
+// `v` into `member`, as the member's type takes it: an enum from one of its nicks, a number or a
+// bool as pybind11 converts an argument of that type.
+template <class T>
+void read(const py::handle& v, const std::string& key, T& member) {
+  if constexpr (std::is_enum_v<T>) {
+    if (!py::isinstance<py::str>(v))
+      throw py::type_error(key + ": a name (str) expected, not " + type_name(v));
+    const std::string nick = v.cast<std::string>();
+    const std::optional<T> value = from_nick<T>(nick);
+    if (!value) throw py::value_error(key + " '" + nick + "' is none of: " + nick_list<T>());
+    member = *value;
+  } else {
+    py::detail::make_caster<T> caster;
+    if (!caster.load(v, true))
+      throw py::type_error(key + ": " + (std::is_same_v<T, bool> ? "a bool" : "a number") +
+                           " expected, not " + type_name(v) + " " + std::string(py::repr(v)));
+    member = py::detail::cast_op<T>(caster);
+  }
+}
+
+// `member` as Python shows it: an enum by its nick.
+template <class T>
+py::object shown(const T& member) {
+  if constexpr (std::is_enum_v<T>)
+    return py::str(nick_of(member));
+  else
+    return py::cast(member);
+}
+
+// Sets the setting named `key` (a keyword of the table) from `v`; false when there is none.
+bool set_setting(Settings& s, const std::string& key, const py::handle& v) {
+#define PROJTRACK_KEYWORD(name, member) \
+  if (key == name) return read(v, key, s.member), true;
+#include "keyword_table.def"
+#undef PROJTRACK_KEYWORD
+  return false;
+}
 
 }  // namespace
 
-Settings make_settings(const Options& o) {
-  Settings s;
-  const std::optional<Method> method = method_from_name(o.method);
-  if (!method) bad("method '" + o.method + "' is none of: " + method_names());
-  s.method = *method;
-  const std::optional<ObjectModelKind> model =
-      by_name(o.model, {ObjectModelKind::Appearance, ObjectModelKind::Edges, ObjectModelKind::Flow},
-              model_name);
-  if (!model) bad("model '" + o.model + "' is none of: appearance, edges, flow");
-  s.tracker.model = *model;
-  const std::optional<Acquisition> acquisition =
-      by_name(o.acquisition, {Acquisition::Manual, Acquisition::Center, Acquisition::Auto},
-              acquisition_name);
-  if (!acquisition) bad("acquisition '" + o.acquisition + "' is none of: manual, center, auto");
-  s.tracker.acquisition = *acquisition;
-  if (std::string why = validate(o.params); !why.empty()) bad(why);
-  if (std::string why = validate(o.edges); !why.empty()) bad(why);
-  if (!(o.edges.low >= 0) || !(o.edges.high >= 0)) bad("edge_low and edge_high must be at least 0");
-  if (o.edges.blur < 0 || o.edges.blur > kMaxBlurPasses)
-    bad("blur = " + std::to_string(o.edges.blur) + " is outside [0, " +
-        std::to_string(kMaxBlurPasses) + "]");
-  if (!(o.max_work >= 0 && o.max_work <= kMaxMaxWork))
-    bad("max_work = " + std::to_string(o.max_work) + " is outside [0, " +
-        std::to_string(kMaxMaxWork) + "] (0: unlimited)");
-  if (!(o.fps > 0 && std::isfinite(o.fps))) bad("fps must be a positive number");
-  s.params = o.params;
-  s.edges = o.edges;
-  s.tracker.smoothing = o.smoothing;
-  s.tracker.max_work = o.max_work;
-  s.fps = o.fps;
-  return s;
+TrackerOptions options_from(const py::kwargs& kwargs) {
+  TrackerOptions o;
+  o.settings = python_defaults();
+  std::set<std::string> given;
+  for (const auto& [k, v] : kwargs) {
+    std::string key = py::cast<std::string>(k);
+    for (const auto& [former, now] : kFormerNames)
+      if (key == former) key = now;
+    if (!given.insert(key).second) throw py::type_error(key + " given twice");
+    if (key == "fps")
+      read(v, key, o.fps);
+    else if (!set_setting(o.settings, key, v))
+      throw py::type_error("Tracker() got an unexpected keyword argument '" +
+                           py::cast<std::string>(k) + "'");
+  }
+  if (std::string why = validate(o.settings); !why.empty()) throw py::value_error(why);
+  if (!(o.fps > 0 && std::isfinite(o.fps))) throw py::value_error("fps must be a positive number");
+  return o;
+}
+
+py::dict options_dict(const TrackerOptions& o) {
+  py::dict d;
+  const Settings& s = o.settings;
+#define PROJTRACK_KEYWORD(name, member) d[name] = shown(s.member);
+#include "keyword_table.def"
+#undef PROJTRACK_KEYWORD
+  d["fps"] = o.fps;
+  return d;
+}
+
+std::string keywords_doc() {
+  const TrackerOptions defaults{python_defaults()};
+  std::ostringstream doc;
+  for (const auto& [key, value] : options_dict(defaults))
+    doc << "    " << std::string(py::str(key)) << "=" << std::string(py::repr(value)) << "\n";
+  return doc.str();
 }
 
 }  // namespace projtrack::python

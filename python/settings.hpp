@@ -1,42 +1,33 @@
-// The tracker's settings as Python gives them (names, numbers), checked once at construction: a
-// bad one is a ValueError that says which and why, never a tracker that reports it per frame.
+// The tracker's settings as Python gives them: keywords named as the element's properties
+// (keyword_table.def), mapped onto the library's settings bundle and checked once, with its one
+// validate(), at construction: a bad one is a ValueError that says which and why, never a tracker
+// that reports it per frame.
 #pragma once
+
+#include <pybind11/pybind11.h>
 
 #include <string>
 
-#include "projtrack/edge_detection.hpp"
-#include "projtrack/method.hpp"
-#include "projtrack/params.hpp"
-#include "projtrack/tracker_params.hpp"
+#include "projtrack/settings.hpp"
 
 namespace projtrack::python {
 
-// What the constructor's keyword arguments say, before they are checked.
-struct Options {
-  std::string method = "gap-tolerant-filling";
-  std::string model = "appearance";
-  std::string acquisition = "manual";  // an OpenCV-style tracker starts from init()
-  Params params;
-  EdgeParams edges;
-  bool smoothing = true;
-  double max_work = TrackerParams{}.max_work;
-  double fps = 30;  // the frame rate that times frames given without a time
-};
-
-struct Settings {
-  Method method = Method::GapTolerantFilling;
-  Params params;
-  EdgeParams edges;
-  TrackerParams tracker;
+// What a Python tracker is set with: the bundle, and the rate that times frames given no time.
+struct TrackerOptions {
+  Settings settings;
   double fps = 30;
 };
 
-// The settings `o` names; throws pybind11::value_error naming the option that is wrong.
-Settings make_settings(const Options& o);
+// The bundle's defaults as Python starts from them: the library's, but for acquisition, which is
+// manual, as an OpenCV-style tracker starts from init(). The one default Python holds.
+Settings python_defaults();
 
-// The names the options accept (for messages and the docs).
-const char* model_name(ObjectModelKind k);
-const char* acquisition_name(Acquisition a);
-std::string method_names();  // "ray-casting, iterative-ray-casting, ..."
+// The options `kwargs` name: TypeError for an unknown keyword or a value of the wrong type,
+// ValueError naming the setting that is out of range.
+TrackerOptions options_from(const pybind11::kwargs& kwargs);
+// Every keyword and its value, by the names Tracker(...) takes.
+pybind11::dict options_dict(const TrackerOptions& o);
+// The keywords and their defaults, one line each, for the class's docstring.
+std::string keywords_doc();
 
 }  // namespace projtrack::python

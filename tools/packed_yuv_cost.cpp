@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "edges/gray_conversion.hpp"
+#include "projtrack/color_conversion.hpp"
 #include "scene.hpp"
 #include "sequence.hpp"
 

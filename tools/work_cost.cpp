@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "adversarial.hpp"
-#include "projtrack/canny.hpp"
+#include "edges/canny.hpp"
 #include "projtrack/edge_detection.hpp"
 #include "projtrack/estimator.hpp"
 #include "projtrack/work_budget.hpp"

@@ -3,7 +3,7 @@
 
 #include "edges/box_blur.hpp"
 #include "output.hpp"
-#include "projtrack/canny.hpp"
+#include "edges/canny.hpp"
 #include "projtrack/method.hpp"
 #include "projtrack/tracker.hpp"
 #include "race.hpp"

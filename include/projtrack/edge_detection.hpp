@@ -2,15 +2,18 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
-#include "canny.hpp"
 #include "geometry.hpp"
 #include "image_view.hpp"
 
 namespace projtrack {
+
+class CannyDetector;  // src/edges/canny.hpp
+class WorkBudget;
 
 enum class EdgeDetector {
   Canny,  // Canny's, hysteresis thresholds low/high (L1 gradient, 3×3 Sobel): as cv::Canny
@@ -41,6 +44,11 @@ std::string validate(const EdgeParams& params);
 // does not allocate.
 class EdgeMap {
  public:
+  EdgeMap();
+  ~EdgeMap();
+  EdgeMap(EdgeMap&&) noexcept;
+  EdgeMap& operator=(EdgeMap&&) noexcept;
+
   // Detects the edges of `gray` and returns a view of them, valid until the next call (for
   // EdgeDetector::Input with black level 0: `gray` itself). An empty or invalid `gray` gives an
   // empty view; out-of-range parameters are clamped (negative thresholds to 0, blur to
@@ -64,7 +72,7 @@ class EdgeMap {
   std::vector<std::uint8_t> blurred_[2],
       edges_;  // edges_: Sobel and thresholded input; Canny has its own
   std::vector<std::int16_t> gx_, gy_;
-  CannyDetector canny_;
+  std::unique_ptr<CannyDetector> canny_;  // its buffers: a stage of src/, not of the API
 };
 
 }  // namespace projtrack

@@ -1,6 +1,7 @@
 // libprojtrack: the whole public API in one include, <projtrack/projtrack.hpp>.
 #pragma once
 
+#include "color_conversion.hpp"
 #include "color_view.hpp"
 #include "edge_detection.hpp"
 #include "estimator.hpp"
@@ -8,8 +9,11 @@
 #include "geometry.hpp"
 #include "image_view.hpp"
 #include "method.hpp"
+#include "names.hpp"
 #include "params.hpp"
 #include "pose.hpp"
+#include "sample_clock.hpp"
+#include "settings.hpp"
 #include "status.hpp"
 #include "trace.hpp"
 #include "tracker.hpp"

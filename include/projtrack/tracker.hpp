@@ -27,6 +27,7 @@
 #include "method.hpp"
 #include "params.hpp"
 #include "pose.hpp"
+#include "settings.hpp"
 #include "silhouette_mask.hpp"
 #include "trace.hpp"
 #include "tracker_params.hpp"
@@ -100,6 +101,10 @@ class Tracker {
   // on the old format would not find it); the track goes on, as after rescale().
   void relearn();
 
+  // One frame taken at `t` seconds with the settings bundle `s` (settings.hpp): as the overloads
+  // below, with s's method, parameters, edges and tracker parameters.
+  TrackResult track(const ColorView& frame, double t, const Settings& s, Trace* trace = nullptr);
+  TrackResult track(const ImageView& gray, double t, const Settings& s, Trace* trace = nullptr);
   // One frame taken at `t` seconds, with edges computed here with `edge_params`: only around the
   // object while tracking. A frame with chroma gives the appearance model its colours; a gray
   // one, luma alone.

@@ -8,9 +8,9 @@
 #include "finder_params.hpp"
 #include "flow_model_params.hpp"
 #include "gesture.hpp"
-#include "motion_detector.hpp"
+#include "motion_params.hpp"
 #include "object_model_params.hpp"
-#include "one_euro_filter.hpp"
+#include "smoothing_params.hpp"
 
 namespace projtrack {
 
@@ -45,7 +45,7 @@ struct TrackerParams {
   ObjectModelKind model = ObjectModelKind::Appearance;
   Acquisition acquisition = Acquisition::Auto;
   AutoAcquisition strategy = AutoAcquisition::CompactMovingRegion;
-  MotionDetector::Params motion{25, 4};
+  MotionParams motion{25, 4};
   double min_motion = 0.0005;  // share of the frame that must change before Auto looks
   int candidates = 12;         // seeds CompactMovingRegion tries per frame
   int min_acquired_side = 8;   // px: a region thinner than this is not acquired
@@ -74,7 +74,7 @@ struct TrackerParams {
   FinderParams finder;
   // Flow model: how it carries and cuts the object.
   FlowModelParams flow;
-  // The grey-level thresholds of motion (MotionDetector::Params::threshold) and of the
+  // The grey-level thresholds of motion (MotionParams::threshold) and of the
   // background (FinderParams::background_change) hold for a scene whose luma spans this many
   // levels (2nd to 98th percentile); in a dimmer one, whose changes are as much smaller, they
   // shrink in proportion, to a third at most.
@@ -100,7 +100,7 @@ struct TrackerParams {
   double max_work = 8;
 
   bool smoothing = true;  // One Euro filter on x, y and depth
-  OneEuroFilter::Params filter;
+  SmoothingParams filter;
   GestureParams push;  // push, press and release from depth (the element's push-threshold)
 };
 

@@ -7,7 +7,7 @@
 
 #include "core/scratch_mask.hpp"
 #include "projtrack/estimator.hpp"
-#include "projtrack/motion_detector.hpp"
+#include "acquisition/motion_detector.hpp"
 #include "projtrack/tracker_params.hpp"
 #include "projtrack/work_budget.hpp"
 

@@ -1,4 +1,4 @@
-#include "projtrack/motion_detector.hpp"
+#include "acquisition/motion_detector.hpp"
 
 #include <algorithm>
 #include <cstdlib>

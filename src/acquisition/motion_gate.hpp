@@ -5,7 +5,7 @@
 #include <string>
 
 #include "projtrack/image_view.hpp"
-#include "projtrack/motion_detector.hpp"
+#include "acquisition/motion_detector.hpp"
 
 namespace projtrack {
 

@@ -12,7 +12,7 @@
 #include "core/work_frame.hpp"
 #include "projtrack/color_view.hpp"
 #include "projtrack/finder_params.hpp"
-#include "projtrack/motion_detector.hpp"
+#include "acquisition/motion_detector.hpp"
 
 namespace projtrack {
 

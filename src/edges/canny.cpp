@@ -1,4 +1,4 @@
-#include "projtrack/canny.hpp"
+#include "edges/canny.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,9 +7,15 @@
 #include <opencv2/imgproc.hpp>
 
 #include "edges/box_blur.hpp"
+#include "edges/canny.hpp"
 #include "projtrack/work_budget.hpp"
 
 namespace projtrack {
+
+EdgeMap::EdgeMap() : canny_(std::make_unique<CannyDetector>()) {}
+EdgeMap::~EdgeMap() = default;
+EdgeMap::EdgeMap(EdgeMap&&) noexcept = default;
+EdgeMap& EdgeMap::operator=(EdgeMap&&) noexcept = default;
 
 namespace {
 
@@ -83,7 +89,7 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
   const double high = std::max(0.0, params.high);
 
   if (params.detector == EdgeDetector::Canny) {
-    return canny_.detect(blurred, low, high, budget);
+    return canny_->detect(blurred, low, high, budget);
   }
   if (budget) {  // two Sobel filters in 16 bits, then the threshold
     if (budget->exhausted(8 * pass)) return none();

@@ -1,4 +1,4 @@
-#include "projtrack/one_euro_filter.hpp"
+#include "pointer/one_euro_filter.hpp"
 
 #include <cmath>
 

@@ -4,7 +4,7 @@
 #include "pointer/gesture_detector.hpp"
 #include "projtrack/features.hpp"
 #include "projtrack/gesture.hpp"
-#include "projtrack/one_euro_filter.hpp"
+#include "pointer/one_euro_filter.hpp"
 #include "projtrack/pose.hpp"
 #include "projtrack/tracker_params.hpp"
 

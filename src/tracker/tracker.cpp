@@ -93,9 +93,7 @@ std::string invalid_settings(const FrameInput& in, const EdgeParams& edge_params
                              const WorkBudget& budget) {
   std::string bad = validate(in.params);
   if (bad.empty()) bad = validate(edge_params);
-  if (bad.empty() && !(in.tp.max_work >= 0 && in.tp.max_work <= kMaxMaxWork))
-    bad = "max_work = " + std::to_string(in.tp.max_work) + " is outside [0, " +
-          std::to_string(kMaxMaxWork) + "]";
+  if (bad.empty()) bad = validate(in.tp);
   if (const std::uint64_t least = least_estimate_cost(in.method, in.params);
       bad.empty() && least > budget.limit()) {
     bad = "one estimate with rays = " + std::to_string(in.params.rays) +

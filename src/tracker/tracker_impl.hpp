@@ -39,7 +39,7 @@ struct FrameWork {
 // What one frame is given besides its pixels.
 struct FrameInput {
   double t = 0;  // seconds
-  Method method = Method::GapTolerantFilling;
+  Method method;
   const Params& params;
   const TrackerParams& tp;
   Trace* trace = nullptr;

@@ -15,7 +15,7 @@
 #include "projtrack/exposure.hpp"
 #include "projtrack/features.hpp"
 #include "projtrack/geometry.hpp"
-#include "projtrack/motion_detector.hpp"
+#include "acquisition/motion_detector.hpp"
 #include "projtrack/tracker_params.hpp"
 #include "segmentation/flow_segmenter.hpp"
 

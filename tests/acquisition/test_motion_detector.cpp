@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "projtrack/motion_detector.hpp"
+#include "acquisition/motion_detector.hpp"
 
 namespace projtrack {
 namespace {

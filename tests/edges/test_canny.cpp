@@ -6,7 +6,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "projtrack/canny.hpp"
+#include "edges/canny.hpp"
 
 namespace projtrack {
 namespace {

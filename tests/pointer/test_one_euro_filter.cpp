@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "projtrack/one_euro_filter.hpp"
+#include "pointer/one_euro_filter.hpp"
 
 namespace projtrack {
 namespace {

@@ -66,7 +66,7 @@ class Tracking(unittest.TestCase):
         for make_frame in (gray_frame, bgr_frame):
             for model in ('appearance', 'edges'):
                 with self.subTest(frame=make_frame.__name__, model=model):
-                    self.follow(make_frame, model=model)
+                    self.follow(make_frame, object_model=model)
 
     def test_every_method(self):
         for method in projtrack.methods():
@@ -123,11 +123,29 @@ class Tracking(unittest.TestCase):
         self.assertTrue(tracker.init(bgr_frame(30, 30), (-20, -20, 100, 100)))
 
     def test_settings(self):
-        t = projtrack.Tracker(method='pixel-filling', model='edges', rays=16, fps=25)
+        t = projtrack.Tracker(method='pixel-filling', object_model='edges', rays=16, fps=25)
         self.assertEqual(t.settings['method'], 'pixel-filling')
-        self.assertEqual(t.settings['model'], 'edges')
+        self.assertEqual(t.settings['object_model'], 'edges')
         self.assertEqual(t.settings['rays'], 16)
         self.assertEqual(t.settings['acquisition'], 'manual')
+        self.assertEqual(t.settings['fps'], 25)
+        # The keywords are the element's property names; settings gives them back, so a tracker
+        # can be made again from them.
+        self.assertEqual(projtrack.Tracker(**t.settings).settings, t.settings)
+        again = projtrack.Tracker(edge_detector='sobel', edge_threshold_low=20,
+                                  edge_threshold_high=90, leak_factor=3, smoothing_beta=0.5,
+                                  smoothing_min_cutoff=2, push_threshold=0.2)
+        for key, value in [('edge_detector', 'sobel'), ('edge_threshold_low', 20),
+                           ('edge_threshold_high', 90), ('leak_factor', 3),
+                           ('smoothing_beta', 0.5), ('smoothing_min_cutoff', 2),
+                           ('push_threshold', 0.2)]:
+            self.assertEqual(again.settings[key], value)
+        # The former names still set the same settings.
+        former = projtrack.Tracker(model='edges', edge_low=20, edge_high=90)
+        self.assertEqual(former.settings['object_model'], 'edges')
+        self.assertEqual(former.settings['edge_threshold_low'], 20)
+        self.assertEqual(former.settings['edge_threshold_high'], 90)
+        self.assertNotIn('model', former.settings)
         self.assertIn("'pixel-filling'", repr(t))
         self.assertEqual(len(projtrack.methods()), 7)
         self.assertIn('gap-tolerant-filling', projtrack.methods())
@@ -160,7 +178,7 @@ class Mask(unittest.TestCase):
         tracker = projtrack.Tracker()
         tracker.init(gray_frame(160, 120), (160, 120))
         self.assertIsNotNone(tracker.track(gray_frame(162, 120)).mask)
-        edges = projtrack.Tracker(model='edges')
+        edges = projtrack.Tracker(object_model='edges')
         edges.init(gray_frame(160, 120), (160, 120))
         r = edges.track(gray_frame(162, 120))
         self.assertTrue(r.ok)
@@ -186,7 +204,7 @@ class MaskStart(unittest.TestCase):
             truth = disc(*path(i))
             iou = np.logical_and(r.mask > 0, truth).sum() / np.logical_or(r.mask > 0, truth).sum()
             self.assertGreater(iou, 0.85, f'frame {i}')
-        self.assertEqual(tracker.settings['model'], 'flow')
+        self.assertEqual(tracker.settings['object_model'], 'flow')
 
     def test_track_takes_a_mask_array_and_every_model_starts_from_it(self):
         for model in ('flow', 'appearance'):
@@ -292,8 +310,14 @@ class BadInput(unittest.TestCase):
                 ({'rays': 1024, 'recursion': 4}, ValueError, 'rays^recursion'),
                 ({'grid_size': 0}, ValueError, 'grid_size'),
                 ({'max_gap': 99}, ValueError, 'max_gap'),
-                ({'edge_low': 200, 'edge_high': 100}, ValueError, ''),
+                ({'edge_threshold_low': 200, 'edge_threshold_high': 100}, ValueError, ''),
                 ({'edge_low': float('nan')}, ValueError, ''),
+                ({'edge_threshold_low': -1}, ValueError, 'edge_threshold_low'),
+                ({'edge_detector': 'prewitt'}, ValueError, 'canny, sobel, input'),
+                ({'leak_factor': 0.5}, ValueError, 'leak_factor'),
+                ({'smoothing_min_cutoff': 0}, ValueError, 'smoothing_min_cutoff'),
+                ({'push_threshold': float('inf')}, ValueError, 'push_threshold'),
+                ({'model': 'edges', 'object_model': 'edges'}, TypeError, 'twice'),
                 ({'blur': -1}, ValueError, 'blur'),
                 ({'max_work': -1}, ValueError, 'max_work'),
                 ({'fps': 0}, ValueError, 'fps'),

@@ -6,7 +6,7 @@
 #include "core/work_frame.hpp"
 #include "edges/box_blur.hpp"
 #include "edges/gray_conversion.hpp"
-#include "projtrack/canny.hpp"
+#include "edges/canny.hpp"
 #include "projtrack/edge_detection.hpp"
 #include "projtrack/finder_params.hpp"
 

@@ -1,4 +1,4 @@
-#include "edges/gray_conversion.hpp"
+#include "projtrack/color_conversion.hpp"
 
 namespace projtrack {
 
@@ -67,6 +67,22 @@ void gather_component(const std::uint8_t* first, int pixel_stride, std::ptrdiff_
     std::uint8_t* o = out + y * out_stride;
     for (int x = 0; x < width; ++x) o[x] = in[static_cast<std::ptrdiff_t>(x) * pixel_stride];
   }
+}
+
+ColorView packed_rgb_to_color(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b,
+                              int pixel_stride, std::ptrdiff_t row_stride, int width, int height,
+                              std::vector<std::uint8_t>& planes) {
+  const std::size_t luma = static_cast<std::size_t>(width) * height;
+  const int cw = (width + 1) / 2, ch = (height + 1) / 2;
+  const std::size_t chroma = static_cast<std::size_t>(cw) * ch;
+  planes.resize(luma + 2 * chroma);
+  packed_rgb_to_gray(r, g, b, pixel_stride, row_stride, width, height, planes.data(), width);
+  packed_rgb_to_chroma(r, g, b, pixel_stride, row_stride, width, height, planes.data() + luma,
+                       planes.data() + luma + chroma, cw);
+  ColorView c;
+  c.luma = ImageView(planes.data(), width, height, width);
+  c.chroma = {planes.data() + luma, planes.data() + luma + chroma, cw, 1, 1, 1};
+  return c;
 }
 
 }  // namespace projtrack

@@ -1,20 +1,16 @@
 // The One Euro filter (Casiez, Roussel & Vogel, CHI 2012): the standard smoother for pointers.
 #pragma once
 
-#include "sample_clock.hpp"
+#include "projtrack/sample_clock.hpp"
+#include "projtrack/smoothing_params.hpp"
 
 namespace projtrack {
 
 // A low-pass filter whose cutoff rises with speed: slow motion is smoothed hard (no jitter), fast
-// motion little (no lag). min_cutoff (Hz) sets the smoothing at rest, beta how fast the cutoff
-// rises with speed (in units of the signal per second).
+// motion little (no lag); its parameters are SmoothingParams (smoothing_params.hpp).
 class OneEuroFilter {
  public:
-  struct Params {
-    double min_cutoff = 1.0;  // Hz
-    double beta = 0.5;        // per (signal unit / s)
-    double d_cutoff = 1.0;    // Hz, for the speed estimate
-  };
+  using Params = SmoothingParams;
 
   void set_params(const Params& p) { p_ = p; }
 

@@ -6,17 +6,15 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry.hpp"
-#include "image_view.hpp"
+#include "projtrack/geometry.hpp"
+#include "projtrack/image_view.hpp"
+#include "projtrack/motion_params.hpp"
 
 namespace projtrack {
 
 class MotionDetector {
  public:
-  struct Params {
-    int threshold = 25;  // grey levels of change that count as motion
-    int step = 2;        // compare every step-th pixel of every step-th row
-  };
+  using Params = MotionParams;
   struct Motion {
     double fraction = 0;          // of the sampled pixels that changed
     Point2d centroid;             // of the changed samples (valid when fraction > 0)

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "image_view.hpp"
+#include "projtrack/image_view.hpp"
 
 namespace projtrack {
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "edges/gray_conversion.hpp"
+#include "projtrack/color_conversion.hpp"
 
 namespace projtrack {
 namespace {

@@ -1,9 +1,13 @@
 // Packed RGB of any component order to 8-bit gray and chroma, for frames that have no YUV planes;
-// packed YUV's luma into a plane.
+// packed YUV's luma into a plane. packed_rgb_to_color() is the entry point for an RGB frame (the
+// element's RGB caps, Python's BGR arrays); the functions it calls are here for what reads a part.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
+
+#include "color_view.hpp"
 
 namespace projtrack {
 
@@ -37,5 +41,13 @@ constexpr std::uint8_t v_of(int r, int g, int b) {
 void packed_rgb_to_chroma(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b,
                           int pixel_stride, std::ptrdiff_t row_stride, int width, int height,
                           std::uint8_t* u, std::uint8_t* v, std::ptrdiff_t chroma_stride);
+
+// A packed RGB frame as the tracker reads it: its luma (packed_rgb_to_gray) and half-resolution
+// chroma (packed_rgb_to_chroma) written into `planes` (resized to fit; reused from frame to
+// frame, it allocates only when the frame grows), and a view of them, valid while `planes` is
+// neither resized nor freed. `r`, `g`, `b`, `pixel_stride` and `row_stride` as above.
+ColorView packed_rgb_to_color(const std::uint8_t* r, const std::uint8_t* g, const std::uint8_t* b,
+                              int pixel_stride, std::ptrdiff_t row_stride, int width, int height,
+                              std::vector<std::uint8_t>& planes);
 
 }  // namespace projtrack
