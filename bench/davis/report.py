@@ -174,6 +174,13 @@ def reading(res):
     return out
 
 
+def model_words(meta):
+    """Which object model the run measured, in the README's words."""
+    model = meta["model"] or meta["module"]["settings"].get("object_model",
+                                                           meta["module"]["settings"].get("model"))
+    return f"object model `{model}`" + ("" if meta["model"] else ", the default")
+
+
 def summary(res, published, methods):
     """The README's block."""
     def j(key):
@@ -182,7 +189,7 @@ def summary(res, published, methods):
                     for m in methods[:2])
     return (f"On DAVIS 2016's development split ({len(res.sequences)} sequences, "
             f"[docs/davis.md](docs/davis.md), run of {res.meta['date']}), J (region IoU, mean "
-            f"over sequences of frames 1..N-2): projtrack from the first mask "
+            f"over sequences of frames 1..N-2): projtrack ({model_words(res.meta)}) from the first mask "
             f"{j(('projtrack', 'mask'))}, from its box {j(('projtrack', 'box'))}, from a click "
             f"{j(('projtrack', 'click'))}; the first mask held still {j(('hold', 'mask'))}; "
             f"OpenCV CSRT from the box {j(('CSRT', 'box'))}; published (from the first mask): "
