@@ -2,8 +2,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "edges/box_blur.hpp"
-#include "output.hpp"
 #include "edges/canny.hpp"
+#include "output.hpp"
 #include "projtrack/method.hpp"
 #include "projtrack/tracker.hpp"
 #include "race.hpp"

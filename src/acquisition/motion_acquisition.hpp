@@ -5,9 +5,9 @@
 #include <optional>
 #include <string>
 
+#include "acquisition/motion_detector.hpp"
 #include "core/scratch_mask.hpp"
 #include "projtrack/estimator.hpp"
-#include "acquisition/motion_detector.hpp"
 #include "projtrack/tracker_params.hpp"
 #include "projtrack/work_budget.hpp"
 

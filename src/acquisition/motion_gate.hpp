@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "projtrack/image_view.hpp"
 #include "acquisition/motion_detector.hpp"
+#include "projtrack/image_view.hpp"
 
 namespace projtrack {
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "acquisition/motion_detector.hpp"
 #include "acquisition/seed_region.hpp"
 #include "appearance/appearance_model.hpp"
 #include "core/mask.hpp"
@@ -12,7 +13,6 @@
 #include "core/work_frame.hpp"
 #include "projtrack/color_view.hpp"
 #include "projtrack/finder_params.hpp"
-#include "acquisition/motion_detector.hpp"
 
 namespace projtrack {
 

@@ -2,9 +2,9 @@
 #pragma once
 
 #include "pointer/gesture_detector.hpp"
+#include "pointer/one_euro_filter.hpp"
 #include "projtrack/features.hpp"
 #include "projtrack/gesture.hpp"
-#include "pointer/one_euro_filter.hpp"
 #include "projtrack/pose.hpp"
 #include "projtrack/tracker_params.hpp"
 

@@ -9,13 +9,13 @@
 #include <optional>
 
 #include "acquisition/motion_acquisition.hpp"
+#include "acquisition/motion_detector.hpp"
 #include "acquisition/object_finder.hpp"
 #include "appearance/silhouette_model.hpp"
 #include "pointer/pointer.hpp"
 #include "projtrack/exposure.hpp"
 #include "projtrack/features.hpp"
 #include "projtrack/geometry.hpp"
-#include "acquisition/motion_detector.hpp"
 #include "projtrack/tracker_params.hpp"
 #include "segmentation/flow_segmenter.hpp"
 

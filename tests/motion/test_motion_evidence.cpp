@@ -49,7 +49,7 @@ TEST(CarryAlongFlow, MovesTheSilhouetteWhereItsPixelsWent) {
 }
 
 TEST(MotionEvidence, FavoursPixelsThatMoveWithTheObject) {
-  cv::Mat flow(60, 60, CV_32FC2, cv::Scalar(1, 0));  // the surroundings
+  cv::Mat flow(60, 60, CV_32FC2, cv::Scalar(1, 0));         // the surroundings
   flow(cv::Rect(20, 20, 20, 20)).setTo(cv::Scalar(-4, 3));  // the object
   cv::Mat inside = cv::Mat::zeros(60, 60, CV_8U);
   inside(cv::Rect(22, 22, 16, 16)).setTo(255);

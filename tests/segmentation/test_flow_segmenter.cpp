@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <opencv2/imgproc.hpp>
 
 #include "segmentation/box_start.hpp"
@@ -24,8 +23,8 @@ struct Scene {
     noise.convertTo(background, CV_8UC3, 0.6, 60);  // muted greys and browns
   }
   // Frame t and its true silhouette: a textured disc, its left half reddened and its right half
-  // of the background's own colours (its texture moving with it), moving 2 px right and 1 down a frame
-  // while the camera pans 1 px.
+  // of the background's own colours (its texture moving with it), moving 2 px right and 1 down a
+  // frame while the camera pans 1 px.
   void render(int t, cv::Mat& bgr, cv::Mat& truth) const {
     background(cv::Rect(t, 20, frame.width, frame.height)).copyTo(bgr);  // the camera pans
     truth = cv::Mat::zeros(frame, CV_8U);

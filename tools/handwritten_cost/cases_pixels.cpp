@@ -5,8 +5,8 @@
 #include "cases.hpp"
 #include "core/work_frame.hpp"
 #include "edges/box_blur.hpp"
-#include "edges/gray_conversion.hpp"
 #include "edges/canny.hpp"
+#include "edges/gray_conversion.hpp"
 #include "projtrack/edge_detection.hpp"
 #include "projtrack/finder_params.hpp"
 
