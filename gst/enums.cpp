@@ -1,7 +1,10 @@
 // The element's enum and flags types, as gst-inspect-1.0 shows them: one value per row of a name
 // table (include/projtrack/names.hpp for the library's enums; updates_table.def and
-// draw_flags_table.def for the element's own). Each is registered on its first use; a
-// function-local static makes that thread-safe.
+// draw_flags_table.def for the element's own). Each is registered, and marked as the plugin's API,
+// on its first use (the property table's GParamSpecs use each one); a function-local static makes
+// that thread-safe.
+#include <gst/gst.h>
+
 #include <cstddef>
 
 #include "enum_types.h"
@@ -23,9 +26,15 @@ const Value* values_of(const NameRow<E> (&rows)[N]) {
   return values;
 }
 
+// Registered, and marked as the plugin's API so that gst-inspect-1.0 and the docs list its values.
+GType plugin_api(GType type) {
+  gst_type_mark_as_plugin_api(type, static_cast<GstPluginAPIFlags>(0));
+  return type;
+}
+
 template <class E, std::size_t N>
 GType register_enum(const char* name, const NameRow<E> (&rows)[N]) {
-  return g_enum_register_static(name, values_of<GEnumValue>(rows));
+  return plugin_api(g_enum_register_static(name, values_of<GEnumValue>(rows)));
 }
 
 constexpr NameRow<projtrack::gst::Updates> kUpdatesNames[] = {
@@ -70,7 +79,7 @@ GType gst_projtrack_updates_get_type(void) {
 }
 
 GType gst_projtrack_draw_flags_get_type(void) {
-  static const GType type =
-      g_flags_register_static("GstProjtrackDrawFlags", values_of<GFlagsValue>(kDrawFlagNames));
+  static const GType type = plugin_api(
+      g_flags_register_static("GstProjtrackDrawFlags", values_of<GFlagsValue>(kDrawFlagNames)));
   return type;
 }

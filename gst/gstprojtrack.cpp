@@ -82,7 +82,6 @@
 #include "gstprojtrack.h"
 
 #include "element.hpp"
-#include "enum_types.h"
 #include "events.hpp"
 #include "meta.hpp"
 #include "properties.hpp"
@@ -192,11 +191,5 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   filter_class->set_info = GST_DEBUG_FUNCPTR(projtrack::gst::set_info);
   trans_class->transform_ip = GST_DEBUG_FUNCPTR(projtrack::gst::transform_ip);
 
-  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_METHOD, static_cast<GstPluginAPIFlags>(0));
-  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_ACQUISITION, static_cast<GstPluginAPIFlags>(0));
-  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_OBJECT_MODEL, static_cast<GstPluginAPIFlags>(0));
-  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_EDGE_DETECTOR, static_cast<GstPluginAPIFlags>(0));
-  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_UPDATES, static_cast<GstPluginAPIFlags>(0));
-  gst_type_mark_as_plugin_api(GST_TYPE_PROJTRACK_DRAW_FLAGS, static_cast<GstPluginAPIFlags>(0));
   projtrack::gst::projtrack_meta_info();  // GstProjtrackMeta, before any buffer carries one
 }

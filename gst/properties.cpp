@@ -43,10 +43,9 @@ bool iterates(const MethodInfo& m) { return m.iterative; }
 
 // The method's blurb names the default method (interned, as above).
 const char* method_blurb() {
-  return g_intern_string((std::string("How the object's centroid and area are measured inside "
-                                      "its outline: rays cast from the inner point, or a fill (") +
-                          nick_of(ElementSettings{}.method) +
-                          ", the default, does not leak through small breaks in the outline)")
+  return g_intern_string((std::string("The estimator: rays cast from the inner point, or a fill "
+                                      "(default ") +
+                          nick_of(ElementSettings{}.method) + ")")
                              .c_str());
 }
 

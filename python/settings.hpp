@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "projtrack/sample_clock.hpp"
 #include "projtrack/settings.hpp"
 
 namespace projtrack::python {
@@ -15,7 +16,7 @@ namespace projtrack::python {
 // What a Python tracker is set with: the bundle, and the rate that times frames given no time.
 struct TrackerOptions {
   Settings settings;
-  double fps = 30;
+  double fps = kAssumedFrameRate;  // the element's rate for buffers without timestamps
 };
 
 // The bundle's defaults as Python starts from them: the library's, but for acquisition, which is
