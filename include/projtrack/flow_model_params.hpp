@@ -22,7 +22,7 @@ struct FlowModelParams {
   // Motion evidence: the surroundings' motion is read in a ring this share of √area wide; a
   // pixel's evidence is at most this many nats either way; none when the object and its
   // surroundings move less than `min_separation` work px a frame apart.
-  double motion_ring = 0.5;
+  double motion_ring = 0.25;
   double motion_weight = 2.0;
   double min_separation = 1.0;
   // A piece of the new silhouette is kept when it holds at least this share of the prior that
