@@ -10,9 +10,13 @@
 
 namespace projtrack {
 
-// `inside` (CV_8U at the work size): 255 on the object GrabCut finds in `work_box` (work pixels).
-// A box GrabCut cannot split (too small, or one colour) gives the ellipse inscribed in it, which
-// the caller is told of by the return value: false.
-bool object_in_box(const WorkImages& img, const Rect& work_box, cv::Mat& inside);
+// How the object in a user's box was found.
+enum class BoxStart {
+  Cut,      // GrabCut separated it
+  Ellipse,  // GrabCut could not run or collapsed (took next to nothing): the inscribed ellipse
+};
+
+// `inside` (CV_8U at the work size): 255 on the object found in `work_box` (work pixels), and how.
+BoxStart object_in_box(const WorkImages& img, const Rect& work_box, cv::Mat& inside);
 
 }  // namespace projtrack
