@@ -25,6 +25,14 @@ struct FlowModelParams {
   double motion_ring = 0.25;
   double motion_weight = 2.0;
   double min_separation = 1.0;
+  // The object's fullest recent silhouette is remembered, moved with the object's own motion
+  // (not each pixel's: an occluder's flow would carry the hidden part away), and stands in the
+  // prior at this weight: a part that passes behind a pole is found again when it comes out. It
+  // is replaced when a silhouette of at least `memory_refresh` × the fullest recent area is seen;
+  // that area fades by `memory_fade` a frame (an object moving away shrinks for good).
+  double memory_weight = 0.3;
+  double memory_refresh = 0.8;
+  double memory_fade = 0.02;
   // A piece of the new silhouette is kept when it holds at least this share of the prior that
   // the best piece holds: a region of the object's colours apart from it is not the object.
   double keep_share = 0.1;

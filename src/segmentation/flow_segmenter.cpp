@@ -13,6 +13,8 @@ void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside) {
   scale_ = img.scale;
   cv::compare(inside, 0, mask_, cv::CMP_GT);
   mask_.convertTo(last_, CV_32F, 1.0 / 255);
+  last_.copyTo(memory_);
+  fullest_ = cv::sum(last_)[0];
   colours_.start(img.bgr, mask_);
   flow_.reset();
   flow_.compute(img.gray);
@@ -21,6 +23,7 @@ void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside) {
 void FlowSegmenter::forget(bool colours) {
   mask_.release();
   last_.release();
+  memory_.release();
   flow_.reset();
   if (colours) colours_.forget();
 }
@@ -30,7 +33,7 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
     forget(false);
     return false;
   }
-  carry_along_flow(last_, flow_.backward(), map_, prior_);
+  predict(p);
   const double area = cv::sum(prior_)[0];
   if (area < 1) {
     forget(false);
@@ -45,7 +48,25 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
   }
   colours_.learn(img.bgr, mask_, p.learning_rate);
   mask_.convertTo(last_, CV_32F, 1.0 / 255);
+  remember(p);
   return true;
+}
+
+void FlowSegmenter::predict(const FlowModelParams& p) {
+  carry_along_flow(last_, flow_.backward(), map_, prior_);
+  cv::compare(prior_, 0.5, inside_, cv::CMP_GT);
+  split_ = split_motion(flow_.backward(), inside_, p.motion_ring);
+  if (!split_.valid || p.memory_weight <= 0) return;
+  // The backward flow says where the object came from: it moved by the opposite.
+  const cv::Matx23f move(1, 0, -split_.object.x, 0, 1, -split_.object.y);
+  cv::warpAffine(memory_, memory_, move, memory_.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+  cv::max(prior_, memory_ * p.memory_weight, prior_);
+}
+
+void FlowSegmenter::remember(const FlowModelParams& p) {
+  const double area = cv::sum(last_)[0];
+  fullest_ = std::max(fullest_ * (1 - p.memory_fade), area);
+  if (last_.size() != memory_.size() || area >= p.memory_refresh * fullest_) last_.copyTo(memory_);
 }
 
 void FlowSegmenter::weigh_evidence(const WorkImages& img, double area, const FlowModelParams& p) {
@@ -65,9 +86,7 @@ void FlowSegmenter::weigh_evidence(const WorkImages& img, double area, const Flo
     }
   }
   colours_.add_evidence(img.bgr, p.first_share, log_odds_);
-  cv::compare(prior_, 0.5, inside_, cv::CMP_GT);
-  const MotionSplit split = split_motion(flow_.backward(), inside_, p.motion_ring);
-  add_motion_evidence(flow_.backward(), split, p.motion_weight, p.min_separation, log_odds_);
+  add_motion_evidence(flow_.backward(), split_, p.motion_weight, p.min_separation, log_odds_);
 }
 
 void FlowSegmenter::keep_pieces_on_prior(double keep_share) {

@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "motion/dense_flow.hpp"
+#include "motion/motion_evidence.hpp"
 #include "projtrack/flow_model_params.hpp"
 #include "segmentation/colour_mixture.hpp"
 #include "segmentation/work_images.hpp"
@@ -28,16 +29,24 @@ class FlowSegmenter {
   void forget(bool colours = true);
 
  private:
+  // The prior: the last silhouette carried along the flow, with the remembered one moved by the
+  // object's motion; the object's and its surroundings' motions into `split_`.
+  void predict(const FlowModelParams& p);
   // The posterior's log-odds of "object" on this frame, from the prior, colours and motion.
   void weigh_evidence(const WorkImages& img, double area, const FlowModelParams& p);
+  // Keeps the silhouette as the remembered one when it is about as full as the fullest recent.
+  void remember(const FlowModelParams& p);
   // Keeps the pieces of the thresholded posterior that hold enough of the prior.
   void keep_pieces_on_prior(double keep_share);
 
   DenseFlow flow_;
   ColourMixture colours_;
   int scale_ = 1;
-  cv::Mat last_;  // the last silhouette, CV_32F 0 or 1
-  cv::Mat mask_;  // this frame's, CV_8U 0 or 255
+  cv::Mat last_;        // the last silhouette, CV_32F 0 or 1
+  cv::Mat mask_;        // this frame's, CV_8U 0 or 255
+  cv::Mat memory_;      // the fullest recent silhouette, CV_32F, moved with the object
+  double fullest_ = 0;  // the fullest recent area, fading
+  MotionSplit split_;
   cv::Mat map_, prior_, log_odds_, inside_, labels_, stats_, centroids_;  // buffers
 };
 
