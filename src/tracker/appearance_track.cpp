@@ -63,13 +63,7 @@ TrackResult Tracker::Impl::start_appearance(const ColorView& frame, EdgeSource& 
     stopped(Features{}, in.tp, r);
     return r;
   }
-  if (seeded) {  // the user's point: keep trying it for a while, as a refused estimate
-    refuse(std::move(start.why), in.tp, r);
-    return r;
-  }
-  r.status = TrackStatus::Searching;
-  r.detail = std::move(start.why);
-  return r;
+  return not_started(std::move(start.why), seeded, in.tp);
 }
 
 TrackResult Tracker::Impl::follow_appearance(const ColorView& frame, EdgeSource& edges,

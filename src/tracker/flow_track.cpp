@@ -101,13 +101,7 @@ TrackResult Tracker::Impl::start_flow(const ColorView& frame, EdgeSource& edges,
     stopped(Features{}, in.tp, r);
     return r;
   }
-  if (seeded) {  // the user's start: keep trying it for a while, as a refused estimate
-    refuse(std::move(start.why), in.tp, r);
-    return r;
-  }
-  r.status = TrackStatus::Searching;
-  r.detail = std::move(start.why);
-  return r;
+  return not_started(std::move(start.why), seeded, in.tp);
 }
 
 TrackResult Tracker::Impl::follow_flow(const ColorView& frame, const FrameInput& in) {

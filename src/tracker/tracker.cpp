@@ -193,6 +193,17 @@ void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult
   if (next.drop) drop_refused_track(state);
 }
 
+TrackResult Tracker::Impl::not_started(std::string why, bool seeded, const TrackerParams& tp) {
+  TrackResult r;
+  if (seeded) {  // the user's start: keep trying it for a while, as a refused estimate
+    refuse(std::move(why), tp, r);
+    return r;
+  }
+  r.status = TrackStatus::Searching;
+  r.detail = std::move(why);
+  return r;
+}
+
 void Tracker::Impl::stopped(const Features& f, const TrackerParams& tp, TrackResult& r) {
   std::string why = f.detail;
   if (f.status == EstimateStatus::Interrupted || work.budget.interrupted()) {
