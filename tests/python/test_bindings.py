@@ -322,7 +322,13 @@ class BadInput(unittest.TestCase):
                 ({'max_work': -1}, ValueError, 'max_work'),
                 ({'fps': 0}, ValueError, 'fps'),
                 ({'rays': '8'}, TypeError, ''),
-                ({'rays': 2 ** 40}, TypeError, ''),
+                # An int beyond C's int (or a double's range) is out of the setting's range.
+                ({'rays': 2 ** 40}, ValueError, 'rays = 1099511627776 is outside [3'),
+                ({'grid_size': 2 ** 31}, ValueError, 'grid_size = 2147483648 is outside [1'),
+                ({'rays': -2 ** 31 - 1}, ValueError, 'rays = -2147483649 is outside [3'),
+                ({'blur': 2 ** 64}, ValueError, 'blur = 18446744073709551616 is outside [0'),
+                ({'leak_factor': -10 ** 400}, ValueError, 'leak_factor = -1000'),
+                ({'fps': -10 ** 400}, ValueError, 'fps = -1000'),
                 ({'method': 3}, TypeError, ''),
                 ({'colour': 'red'}, TypeError, '')]:
             with self.subTest(**{k: repr(v) for k, v in kwargs.items()}):
