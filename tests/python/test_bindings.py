@@ -422,6 +422,30 @@ class BadInput(unittest.TestCase):
             if r.mask is not None:
                 self.assertEqual(r.mask.shape, f.shape[:2])
 
+    def test_a_new_size_rescales_and_a_new_kind_relearns(self):
+        # As the element takes new caps: the track goes on, its centroid and area scaled.
+        tracker = projtrack.Tracker()
+        tracker.init(bgr_frame(160, 120), (160, 120))
+        r = tracker.track(bgr_frame(160, 120))
+        self.assertEqual(r.status, 'ok', r.detail)
+        area = r.area
+        r = tracker.track(bgr_frame(80, 60, R // 2, W // 2, H // 2))
+        self.assertEqual(r.status, 'ok', r.detail)
+        self.assertAlmostEqual(r.centroid[0], 80, delta=1.5)
+        self.assertAlmostEqual(r.area, area / 4, delta=0.1 * area / 4)
+        r = tracker.track(gray_frame(80, 60, R // 2, W // 2, H // 2))
+        self.assertEqual(r.status, 'ok', r.detail)
+        self.assertAlmostEqual(r.area, area / 4, delta=0.1 * area / 4)
+
+    def test_a_bad_seed_with_a_new_size_leaves_the_track_as_it_was(self):
+        tracker = projtrack.Tracker()
+        tracker.init(gray_frame(160, 120), (160, 120))
+        with self.assertRaises(ValueError):
+            tracker.track(gray_frame(80, 60, R // 2, W // 2, H // 2), point=(500, 5))
+        r = tracker.track(gray_frame(162, 120))
+        self.assertEqual(r.status, 'ok', r.detail)
+        self.assertAlmostEqual(r.centroid[0], 162, delta=1.5)
+
     def test_threads_share_a_tracker_safely(self):
         tracker = projtrack.Tracker(acquisition='auto')
         frames = [bgr_frame(*path(i)) for i in range(6)]
