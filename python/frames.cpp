@@ -56,6 +56,7 @@ ColorView FrameReader::read(const py::handle& obj) {
     if (!a) throw py::error_already_set();
   }
   held_ = a;
+  channels_ = s.channels;
   const auto* data = static_cast<const std::uint8_t*>(a.data());
   const std::ptrdiff_t stride = s.height == 1 ? s.width * s.channels : a.strides(0);
   ColorView c;

@@ -22,10 +22,13 @@ class FrameReader {
   // the reader holds the array (or its copy) and the converted planes. Throws TypeError for
   // what is not a numpy array of uint8, ValueError for a shape that is no frame.
   ColorView read(const pybind11::handle& obj);
+  // The last frame's channels: 1 (gray), 3 (BGR) or 4 (BGRA); its kind, as the element's format.
+  int channels() const { return channels_; }
 
  private:
   pybind11::array held_;              // the array read in place, kept alive while it is read
   std::vector<std::uint8_t> planes_;  // BGR's luma, then its U and V planes
+  int channels_ = 0;
 };
 
 }  // namespace projtrack::python

@@ -2,6 +2,7 @@
 
 #include <pybind11/numpy.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -71,26 +72,39 @@ bool is_mask(const Where& where) {
          py::reinterpret_borrow<py::array>(where.obj).ndim() == 2;
 }
 
+// A seed read and checked, not yet given to the tracker: a bad one raises before the tracker
+// changes (a new size rescales it first, and the seed is in the new frame's pixels).
+struct Seed {
+  Where::Kind kind = Where::Nowhere;  // Nowhere, Point, Box or Mask
+  Point2i point;
+  Rect box;
+  py::array_t<std::uint8_t> mask;
+};
+
 // The mask `obj` as the object's silhouette on a width × height frame: a ValueError for another
 // shape or a mask with no pixel set. Any numeric dtype; non-zero is the object.
-void seed_mask(Tracker& tracker, const py::handle& obj, int width, int height) {
-  const auto m = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(
+py::array_t<std::uint8_t> parse_mask(const py::handle& obj, int width, int height) {
+  auto m = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(
       py::reinterpret_borrow<py::object>(obj));
   if (!m || m.ndim() != 2 || m.shape(0) != height || m.shape(1) != width)
     throw py::value_error("mask: an (H, W) = (" + std::to_string(height) + ", " +
                           std::to_string(width) + ") array expected, non-zero on the object");
-  if (!tracker.seed_mask(ImageView(m.data(), width, height, width)))
+  const std::uint8_t* d = m.data();
+  if (std::none_of(d, d + m.size(), [](std::uint8_t v) { return v != 0; }))
     throw py::value_error("mask: no pixel is set (non-zero): there is no object in it");
+  return m;
 }
 
 // The seed `where` gives in a width × height frame: a ValueError for a point outside it, a box
 // without area or outside it, a mask of another shape or empty, or another count of numbers; a
 // TypeError for what are not numbers. A box is clipped to the frame.
-void seed(Tracker& tracker, const Where& where, int width, int height) {
-  if (where.kind == Where::Nowhere) return;
+Seed parse_seed(const Where& where, int width, int height) {
+  Seed s;
+  if (where.kind == Where::Nowhere) return s;
   if (is_mask(where)) {
-    seed_mask(tracker, where.obj, width, height);
-    return;
+    s.kind = Where::Mask;
+    s.mask = parse_mask(where.obj, width, height);
+    return s;
   }
   const char* what = where.kind == Where::Point ? "point"
                      : where.kind == Where::Box ? "box"
@@ -104,8 +118,16 @@ void seed(Tracker& tracker, const Where& where, int width, int height) {
                            : where.kind == Where::Box ? "(x, y, width, height)"
                                                       : "(x, y) or (x, y, width, height)") +
                           " expected, not " + std::to_string(v.size()) + " numbers");
-  if (point) tracker.seed(parse_point(v, width, height));
-  if (box) tracker.seed_box(parse_box(v, width, height));
+  s.kind = point ? Where::Point : Where::Box;
+  if (point) s.point = parse_point(v, width, height);
+  if (box) s.box = parse_box(v, width, height);
+  return s;
+}
+
+void apply(Tracker& tracker, const Seed& s, int width, int height) {
+  if (s.kind == Where::Point) tracker.seed(s.point);
+  if (s.kind == Where::Box) tracker.seed_box(s.box);
+  if (s.kind == Where::Mask) tracker.seed_mask(ImageView(s.mask.data(), width, height, width));
 }
 
 }  // namespace
@@ -124,7 +146,9 @@ Result PyTracker::track(const py::handle& frame, const Where& where, const py::o
     seconds = number(t, "t");
     if (!std::isfinite(seconds)) throw py::value_error("t: a finite number of seconds expected");
   }
-  seed(tracker_, where, w, h);  // checked first: a bad point or box leaves the track as it was
+  const Seed start = parse_seed(where, w, h);  // first: a bad one leaves the track as it was
+  reframe(w, h, reader_.channels());
+  apply(tracker_, start, w, h);
   if (where.restart) frames_ = 0;
   Result res;
   py::array_t<std::uint8_t> mask;
@@ -138,6 +162,18 @@ Result PyTracker::track(const py::handle& frame, const Where& where, const py::o
   }
   if (has_mask) res.mask = std::move(mask);
   return res;
+}
+
+void PyTracker::reframe(int width, int height, int channels) {
+  // As the element takes new caps (gst/stream.cpp, set_info()): another size rescales the track,
+  // another kind of frame at the same size (gray, BGR, BGRA: another format) relearns its colours.
+  if (width_ > 0 && (width != width_ || height != height_))
+    tracker_.rescale(width_, height_, width, height);
+  else if (channels_ > 0 && channels != channels_)
+    tracker_.relearn();
+  width_ = width;
+  height_ = height;
+  channels_ = channels;
 }
 
 bool PyTracker::init(const py::handle& frame, const py::handle& where) {

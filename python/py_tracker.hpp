@@ -43,10 +43,15 @@ class PyTracker {
   long frames() const { return frames_; }
 
  private:
+  // A frame of `width` × `height` with `channels` after the last one: the track follows a new size
+  // or a new kind of frame as the element's does new caps.
+  void reframe(int width, int height, int channels);
+
   TrackerOptions options_;
   Tracker tracker_;
   FrameReader reader_;
-  std::mutex mutex_;  // one frame at a time: track() runs without the GIL
+  int width_ = 0, height_ = 0, channels_ = 0;  // the last frame's (0: none yet)
+  std::mutex mutex_;                           // one frame at a time: track() runs without the GIL
   // Frames tracked since the start or reset(); frames() may read it while a thread tracks.
   std::atomic<long> frames_{0};
 };

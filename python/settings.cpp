@@ -1,6 +1,7 @@
 #include "settings.hpp"
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string_view>
@@ -32,10 +33,26 @@ std::string type_name(const py::handle& v) {
   return std::string(py::str(v.get_type().attr("__name__")));
 }
 
+// The message for an int `v` that the member's type cannot hold (beyond C's int, or a double's
+// range): the setting's range as validate() words it, from `probe` (validate() of the defaults with
+// the member at `extreme`, the nearest value of its type), with the number given.
+template <class T, class Probe>
+std::string beyond_type(const py::handle& v, const std::string& key, T extreme,
+                        const Probe& probe) {
+  const std::string given = key + " = " + std::string(py::repr(v));
+  const std::string why = probe(extreme);
+  const std::string head = key + " = ";  // "key = value <why>": the value is the one given
+  const std::size_t rest = why.find(' ', head.size());
+  if (why.rfind(head, 0) == 0 && rest != std::string::npos) return given + why.substr(rest);
+  if (!why.empty()) return given + " is out of range: " + why;
+  return given + (std::is_integral_v<T> ? " is beyond C's int" : " is beyond a double's range");
+}
+
 // `v` into `member`, as the member's type takes it: an enum from one of its nicks, a number or a
-// bool as pybind11 converts an argument of that type.
-template <class T>
-void read(const py::handle& v, const std::string& key, T& member) {
+// bool as pybind11 converts an argument of that type. An int the type cannot hold is out of the
+// setting's range (a ValueError, as any other), not of the wrong type.
+template <class T, class Probe>
+void read(const py::handle& v, const std::string& key, T& member, const Probe& probe) {
   if constexpr (std::is_enum_v<T>) {
     if (!py::isinstance<py::str>(v))
       throw py::type_error(key + ": a name (str) expected, not " + type_name(v));
@@ -45,9 +62,19 @@ void read(const py::handle& v, const std::string& key, T& member) {
     member = *value;
   } else {
     py::detail::make_caster<T> caster;
-    if (!caster.load(v, true))
+    if (!caster.load(v, true)) {
+      if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+        if (PyLong_Check(v.ptr()) && !PyBool_Check(v.ptr())) {
+          PyErr_Clear();
+          const bool negative = py::int_(py::reinterpret_borrow<py::object>(v)) < py::int_(0);
+          throw py::value_error(beyond_type(
+              v, key, negative ? std::numeric_limits<T>::lowest() : std::numeric_limits<T>::max(),
+              probe));
+        }
+      }
       throw py::type_error(key + ": " + (std::is_same_v<T, bool> ? "a bool" : "a number") +
                            " expected, not " + type_name(v) + " " + std::string(py::repr(v)));
+    }
     member = py::detail::cast_op<T>(caster);
   }
 }
@@ -63,8 +90,16 @@ py::object shown(const T& member) {
 
 // Sets the setting named `key` (a keyword of the table) from `v`; false when there is none.
 bool set_setting(Settings& s, const std::string& key, const py::handle& v) {
-#define PROJTRACK_KEYWORD(name, member) \
-  if (key == name) return read(v, key, s.member), true;
+  // What validate() says of the defaults with this one member at `extreme`.
+#define PROJTRACK_KEYWORD(name, member)       \
+  if (key == name) {                          \
+    read(v, key, s.member, [](auto extreme) { \
+      Settings probe = python_defaults();     \
+      probe.member = extreme;                 \
+      return validate(probe);                 \
+    });                                       \
+    return true;                              \
+  }
 #include "keyword_table.def"
 #undef PROJTRACK_KEYWORD
   return false;
@@ -82,7 +117,9 @@ TrackerOptions options_from(const py::kwargs& kwargs) {
       if (key == former) key = now;
     if (!given.insert(key).second) throw py::type_error(key + " given twice");
     if (key == "fps")
-      read(v, key, o.fps);
+      read(v, key, o.fps, [](double fps) {
+        return fps > 0 ? std::string() : "fps = " + std::to_string(fps) + " is not positive";
+      });
     else if (!set_setting(o.settings, key, v))
       throw py::type_error("Tracker() got an unexpected keyword argument '" +
                            py::cast<std::string>(k) + "'");

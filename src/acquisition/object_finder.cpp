@@ -142,7 +142,10 @@ double ObjectFinder::foreground_share(const Mask& s, int scale, const FinderPara
 
 double ObjectFinder::foreground_share(const WorkFrame& work, const Mask& s, int scale,
                                       const FinderParams& p) const {
-  if (scene_seen_ < p.background_frames || scene_rect_.empty()) return 1.0;
+  // A background of frames of another size (before a rescale) is none of these frames': read
+  // with their layout, it would compare the wrong pixels, and past its end on larger frames.
+  if (scene_seen_ < p.background_frames || scene_rect_.empty() || work.rect() != scene_rect_)
+    return 1.0;
   const int fs = std::max(1, work.scale());
   const ImageView& luma = work.view().luma;
   double in = 0, differ = 0;

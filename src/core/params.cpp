@@ -1,13 +1,16 @@
 #include "projtrack/params.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace projtrack {
 
 namespace {
+// "rays = 0 is outside [3, 1024]": whole numbers as such (%.15g: up to 15 digits, as given).
 std::string out_of_range(const char* name, double value, double lo, double hi) {
-  return std::string(name) + " = " + std::to_string(value) + " is outside [" + std::to_string(lo) +
-         ", " + std::to_string(hi) + "]";
+  char text[200];
+  std::snprintf(text, sizeof text, "%s = %.15g is outside [%.15g, %.15g]", name, value, lo, hi);
+  return text;
 }
 }  // namespace
 

@@ -1,13 +1,17 @@
 #include "projtrack/settings.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace projtrack {
 
 std::string validate(const TrackerParams& tp) {
-  if (!(tp.max_work >= 0 && tp.max_work <= kMaxMaxWork))
-    return "max_work = " + std::to_string(tp.max_work) + " is outside [0, " +
-           std::to_string(kMaxMaxWork) + "]";
+  if (!(tp.max_work >= 0 && tp.max_work <= kMaxMaxWork)) {
+    char why[120];
+    std::snprintf(why, sizeof why, "max_work = %.15g is outside [0, %.15g]", tp.max_work,
+                  kMaxMaxWork);
+    return why;
+  }
   return {};
 }
 

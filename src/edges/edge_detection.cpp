@@ -112,8 +112,11 @@ ImageView EdgeMap::detect(const ImageView& gray, const EdgeParams& params, const
 }
 
 std::string validate(const EdgeParams& params) {
-  if (!std::isfinite(params.low) || !std::isfinite(params.high))
-    return "the edge thresholds must be numbers";
+  if (!std::isfinite(params.low))
+    return "edge_threshold_low = " + std::to_string(params.low) + " must be a number of at least 0";
+  if (!std::isfinite(params.high))
+    return "edge_threshold_high = " + std::to_string(params.high) +
+           " must be a number of at least 0";
   if (params.detector == EdgeDetector::Canny && params.low > params.high) {
     char why[160];
     std::snprintf(why, sizeof why,

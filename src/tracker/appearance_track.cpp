@@ -8,6 +8,27 @@
 
 namespace projtrack {
 
+namespace {
+
+// Why `f`, the first estimate of the object model started within a box or from a point, is
+// refused. A new track's needs only be plausible for its origin. One that goes on a track whose
+// last estimate was kept (a rescale or a relearn: the model starts again within the last box)
+// continues that track, as any frame of it: judged with the track's own origin against the last
+// estimate (scaled), so a start that took a sliver of the object (25 px² of a 5 000 px² cup) is
+// no continuation that every next frame's estimate then "jumps" from. Its colours learned anew,
+// it may take another part of the object (on a gray frame the cup's body alone, 0.47× its colour
+// silhouette), so its area may change by leak_factor² rather than leak_factor.
+std::string why_not_first(const Features& f, int w, int h, const TrackerParams& tp,
+                          const TrackerState::Track& track) {
+  if (!track.last) return why_implausible(f, w, h, tp, track.inner ? Origin::User : Origin::Found);
+  TrackerParams restart = tp;
+  restart.leak_factor = tp.leak_factor * tp.leak_factor;
+  return why_refused(f, w, h, restart, &*track.last, HUGE_VAL,
+                     track.seeded ? Origin::User : Origin::Found);
+}
+
+}  // namespace
+
 ColorView Tracker::Impl::as_appearance_reads(const ColorView& raw, const TrackerParams& tp) {
   if (!state.object.knows_colours())
     state.exposure = exposure_for(luma_range(raw.luma), tp.dim_white, tp.full_contrast);
@@ -53,12 +74,17 @@ TrackResult Tracker::Impl::start_appearance(const ColorView& frame, EdgeSource& 
       stopped(f, in.tp, r);
       return r;
     }
-    start.why = why_implausible(f, w, h, in.tp, seeded ? Origin::User : Origin::Found);
+    start.why = why_not_first(f, w, h, in.tp, state.track());
     if (start.why.empty()) {
       accept(f, w, h, in, start.resumed, r);
       return r;
     }
-    state.object.forget_position();
+    // A continuation refused: its colours too, learned from what was no continuation of the
+    // object, are not kept (a track dropped later would look for them).
+    if (state.track().last)
+      state.object.forget();
+    else
+      state.object.forget_position();
   } else if (work_stopped()) {  // its edges were cut short
     stopped(Features{}, in.tp, r);
     return r;

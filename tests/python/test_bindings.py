@@ -322,7 +322,13 @@ class BadInput(unittest.TestCase):
                 ({'max_work': -1}, ValueError, 'max_work'),
                 ({'fps': 0}, ValueError, 'fps'),
                 ({'rays': '8'}, TypeError, ''),
-                ({'rays': 2 ** 40}, TypeError, ''),
+                # An int beyond C's int (or a double's range) is out of the setting's range.
+                ({'rays': 2 ** 40}, ValueError, 'rays = 1099511627776 is outside [3'),
+                ({'grid_size': 2 ** 31}, ValueError, 'grid_size = 2147483648 is outside [1'),
+                ({'rays': -2 ** 31 - 1}, ValueError, 'rays = -2147483649 is outside [3'),
+                ({'blur': 2 ** 64}, ValueError, 'blur = 18446744073709551616 is outside [0'),
+                ({'leak_factor': -10 ** 400}, ValueError, 'leak_factor = -1000'),
+                ({'fps': -10 ** 400}, ValueError, 'fps = -1000'),
                 ({'method': 3}, TypeError, ''),
                 ({'colour': 'red'}, TypeError, '')]:
             with self.subTest(**{k: repr(v) for k, v in kwargs.items()}):
@@ -415,6 +421,30 @@ class BadInput(unittest.TestCase):
             self.assertIsInstance(r.status, str)
             if r.mask is not None:
                 self.assertEqual(r.mask.shape, f.shape[:2])
+
+    def test_a_new_size_rescales_and_a_new_kind_relearns(self):
+        # As the element takes new caps: the track goes on, its centroid and area scaled.
+        tracker = projtrack.Tracker()
+        tracker.init(bgr_frame(160, 120), (160, 120))
+        r = tracker.track(bgr_frame(160, 120))
+        self.assertEqual(r.status, 'ok', r.detail)
+        area = r.area
+        r = tracker.track(bgr_frame(80, 60, R // 2, W // 2, H // 2))
+        self.assertEqual(r.status, 'ok', r.detail)
+        self.assertAlmostEqual(r.centroid[0], 80, delta=1.5)
+        self.assertAlmostEqual(r.area, area / 4, delta=0.1 * area / 4)
+        r = tracker.track(gray_frame(80, 60, R // 2, W // 2, H // 2))
+        self.assertEqual(r.status, 'ok', r.detail)
+        self.assertAlmostEqual(r.area, area / 4, delta=0.1 * area / 4)
+
+    def test_a_bad_seed_with_a_new_size_leaves_the_track_as_it_was(self):
+        tracker = projtrack.Tracker()
+        tracker.init(gray_frame(160, 120), (160, 120))
+        with self.assertRaises(ValueError):
+            tracker.track(gray_frame(80, 60, R // 2, W // 2, H // 2), point=(500, 5))
+        r = tracker.track(gray_frame(162, 120))
+        self.assertEqual(r.status, 'ok', r.detail)
+        self.assertAlmostEqual(r.centroid[0], 162, delta=1.5)
 
     def test_threads_share_a_tracker_safely(self):
         tracker = projtrack.Tracker(acquisition='auto')

@@ -84,6 +84,70 @@ TEST(Reframe, RelearningFindsTheObjectWhoseColoursAreReadAnotherWay) {
   EXPECT_NEAR(r.features.centroid.x, 160, 1.5);
 }
 
+// A disc moving to the right, at `k` times the 360×240 scene's size on frame `i`.
+Picture moving_disc(int i, double k) {
+  return disc(static_cast<int>(std::lround(360 * k)), static_cast<int>(std::lround(240 * k)),
+              (120 + 1.5 * i) * k, 120 * k, 40 * k);
+}
+
+// One frame of `p` at `t` seconds, as the tests above track theirs.
+TrackResult track(Tracker& tracker, const Picture& p, double t, const TrackerParams& tp) {
+  return tracker.track(p.view(), EdgeParams{}, t, Method::GapTolerantFilling, {}, tp);
+}
+
+// Issue 32 item 4: a resize at any point of the track's life (after 1, 2, 5, 20, 60 frames; down
+// and up by 2× and 3×) keeps it, its area continuous once scaled.
+TEST(Reframe, AResizeAtAnyFrameKeepsTheTrack) {
+  const TrackerParams tp = manual();
+  for (const int after : {1, 2, 5, 20, 60}) {
+    for (const double k : {0.5, 1.0 / 3, 2.0, 3.0}) {
+      SCOPED_TRACE("after " + std::to_string(after) + " frames, x" + std::to_string(k));
+      Tracker t;
+      t.seed({120, 120});
+      TrackResult r;
+      for (int i = 0; i < after; ++i) r = track(t, moving_disc(i, 1), i / 30.0, tp);
+      ASSERT_EQ(r.status, TrackStatus::Ok) << r.detail;
+      double area = r.features.area * k * k;
+      const Picture p = moving_disc(after, k);
+      t.rescale(360, 240, p.w, p.h);
+      int ok = 0;
+      for (int i = after; i < after + 20; ++i) {
+        r = track(t, moving_disc(i, k), i / 30.0, tp);
+        if (r.status != TrackStatus::Ok) continue;
+        ++ok;
+        EXPECT_NEAR(r.features.area, area, 0.25 * area) << "frame " << i;
+        EXPECT_NEAR(r.features.centroid.x, (120 + 1.5 * i) * k, 2 * k + 1) << "frame " << i;
+        area = r.features.area;
+      }
+      EXPECT_GE(ok, 18);
+    }
+  }
+}
+
+// The start within the box after a rescale continues the track: a sliver of the object there (a
+// hand over all but a spot of it) is refused rather than taken as the track's size, which every
+// next frame's estimate would then "jump" from, losing the object for good.
+TEST(Reframe, TheStartAfterARescaleContinuesTheTrack) {
+  const TrackerParams tp = manual();
+  Tracker t;
+  t.seed({160, 120});
+  TrackResult r;
+  for (int i = 0; i < 20; ++i) r = track(t, disc(320, 240, 160, 120, 40), i / 30.0, tp);
+  ASSERT_EQ(r.status, TrackStatus::Ok) << r.detail;
+  const double area = r.features.area / 4;
+  t.rescale(320, 240, 160, 120);
+  r = track(t, disc(160, 120, 80, 60, 3), 1, tp);
+  EXPECT_NE(r.status, TrackStatus::Ok) << "a sliver of " << r.features.area << " px² taken";
+  int ok = 0;
+  for (int i = 0; i < 10; ++i) {
+    r = track(t, disc(160, 120, 80, 60, 20), 1.1 + i / 30.0, tp);
+    if (r.status != TrackStatus::Ok) continue;
+    ++ok;
+    EXPECT_NEAR(r.features.area, area, 0.25 * area);
+  }
+  EXPECT_GE(ok, 9) << r.detail;
+}
+
 TEST(Reframe, TheSilhouetteAndItsOutline) {
   const TrackerParams tp = manual();
   Tracker t;
