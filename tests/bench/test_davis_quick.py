@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """The DAVIS benchmark's quick run, end to end (bench/davis/run.py --quick, then report.py into
 the build folder): projtrack and the held mask on two sequences of davis-dev, 10 frames each
-(frames 1..8 scored). Fails when projtrack's J from the box or the click (and from the first mask,
-when the module takes a mask start and a value is recorded) falls more than MARGIN points below
-the value recorded in davis_quick_j.json beside this file (how it was measured: its "how").
+(frames 1..8 scored), with the module's default object model and with the flow model. Fails when
+projtrack's J from a start falls more than MARGIN points below the value recorded for that model
+in davis_quick_j.json beside this file ("j": the default model, "j_flow": the flow model; how they
+were measured: its "how"; a start with no recorded value is printed, not judged).
 Skipped (exit 77) when the data folder is missing.
 
     test_davis_quick.py BENCH_DAVIS_DIR DATA_DIR OUT_DIR
@@ -28,41 +29,57 @@ with open(os.path.join(here, "davis_quick_j.json")) as f:
     recorded = json.load(f)
 
 t0 = time.monotonic()
-shutil.rmtree(out, ignore_errors=True)
-os.makedirs(out)
-subprocess.run([sys.executable, os.path.join(bench, "run.py"), "--data", data, "--out", out,
-                "--quick", "--sequences", ",".join(recorded["sequences"]),
-                "--frames", str(recorded["frames"]), "--trackers", "projtrack,hold"],
-               check=True, timeout=600)
-subprocess.run([sys.executable, os.path.join(bench, "report.py"), out, out,
-                os.path.join(out, "davis.md")], check=True, timeout=300)
-assert os.path.exists(os.path.join(out, "j_per_sequence.png"))
 
-runs = {(r["sequence"], r["tracker"], r["start"]): r
-        for r in csv.DictReader(open(os.path.join(out, "runs.csv")))}
-frames = list(csv.DictReader(open(os.path.join(out, "frames.csv"))))
+
+def j_of_run(model, sub):
+    """projtrack's J per start (None: not measured) from a quick run with object model `model`
+    (None: the module's default) into OUT_DIR/sub."""
+    where = os.path.join(out, sub)
+    shutil.rmtree(where, ignore_errors=True)
+    os.makedirs(where)
+    args = [sys.executable, os.path.join(bench, "run.py"), "--data", data, "--out", where,
+            "--quick", "--sequences", ",".join(recorded["sequences"]),
+            "--frames", str(recorded["frames"]), "--trackers", "projtrack,hold"]
+    subprocess.run(args + (["--model", model] if model else []), check=True, timeout=600)
+    subprocess.run([sys.executable, os.path.join(bench, "report.py"), where, where,
+                    os.path.join(where, "davis.md")], check=True, timeout=300)
+    assert os.path.exists(os.path.join(where, "j_per_sequence.png"))
+    runs = {(r["sequence"], r["tracker"], r["start"]): r
+            for r in csv.DictReader(open(os.path.join(where, "runs.csv")))}
+    frames = list(csv.DictReader(open(os.path.join(where, "frames.csv"))))
+    result = {}
+    for start in ("mask", "box", "click"):
+        measured = [runs[(s, "projtrack", start)]["measured"] == "1" for s in recorded["sequences"]]
+        if not all(measured):
+            assert start == "mask", (start, "not measured")  # only the mask start may be refused
+            result[start] = None
+            continue
+        per_seq = []
+        for s in recorded["sequences"]:
+            js = [float(r["j"]) for r in frames
+                  if (r["sequence"], r["tracker"], r["start"]) == (s, "projtrack", start)]
+            assert len(js) == recorded["frames"] - 2, (s, start, len(js))
+            per_seq.append(100 * sum(js) / len(js))
+        result[start] = sum(per_seq) / len(per_seq)
+    return result
+
+
 failures = []
-for start, old in recorded["j"].items():
-    measured = [runs[(s, "projtrack", start)]["measured"] == "1" for s in recorded["sequences"]]
-    if not all(measured):
-        assert start == "mask", (start, "not measured")  # only the mask start may be refused
-        print(f"projtrack from the {start}: not measured "
-              f"({runs[(recorded['sequences'][0], 'projtrack', start)]['note']})")
-        continue
-    per_seq = []
-    for s in recorded["sequences"]:
-        js = [float(r["j"]) for r in frames
-              if (r["sequence"], r["tracker"], r["start"]) == (s, "projtrack", start)]
-        assert len(js) == recorded["frames"] - 2, (s, start, len(js))
-        per_seq.append(100 * sum(js) / len(js))
-    j = sum(per_seq) / len(per_seq)
-    if old is None:
-        print(f"projtrack from the {start}: J {j:.1f} (none recorded yet: record it in "
-              "davis_quick_j.json)")
-        continue
-    print(f"projtrack from the {start}: J {j:.1f}, recorded {old:.1f}, threshold "
-          f"{old - MARGIN:.1f}")
-    if not j >= old - MARGIN:
-        failures.append(f"{start}: J {j:.1f} < {old:.1f} - {MARGIN:g}")
+for model, key in ((None, "j"), ("flow", "j_flow")):
+    name = model or "the default model"
+    got = j_of_run(model, model or "default")
+    for start, old in recorded[key].items():
+        j = got[start]
+        if j is None:
+            print(f"{name}, from the {start}: not measured")
+            continue
+        if old is None:
+            print(f"{name}, from the {start}: J {j:.1f} (none recorded yet: record it in "
+                  "davis_quick_j.json)")
+            continue
+        print(f"{name}, from the {start}: J {j:.1f}, recorded {old:.1f}, threshold "
+              f"{old - MARGIN:.1f}")
+        if not j >= old - MARGIN:
+            failures.append(f"{name}, {start}: J {j:.1f} < {old:.1f} - {MARGIN:g}")
 assert not failures, "J regressed on the quick DAVIS run: " + "; ".join(failures)
 print(f"davis quick: ok ({time.monotonic() - t0:.0f} s)")
