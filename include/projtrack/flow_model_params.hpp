@@ -4,6 +4,8 @@
 // object's √area, so the same values hold for a small and a large object.
 #pragma once
 
+#include <string>
+
 namespace projtrack {
 
 struct FlowModelParams {
@@ -37,5 +39,10 @@ struct FlowModelParams {
   // the best piece holds: a region of the object's colours apart from it is not the object.
   double keep_share = 0.1;
 };
+
+// Empty when every member is in range (work_pixels at least 1000, prior_floor in (0, 0.5), the
+// shares, rates and weights in [0, 1], memory_fade below 1, the widths and motion_weight at least
+// 0); otherwise which one is not, and its range.
+std::string validate(const FlowModelParams& p);
 
 }  // namespace projtrack

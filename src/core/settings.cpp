@@ -12,7 +12,7 @@ std::string validate(const TrackerParams& tp) {
                   kMaxMaxWork);
     return why;
   }
-  return {};
+  return validate(tp.flow);
 }
 
 std::string validate(const Settings& s) {

@@ -10,25 +10,31 @@ cv::Mat wrap(const std::uint8_t* data, int w, int h, std::ptrdiff_t stride, int 
   return {h, w, type, const_cast<std::uint8_t*>(data), static_cast<std::size_t>(stride)};
 }
 
-// The frame's chroma as Cr, Cb planes at the work size, into the two last channels of `ycrcb`.
-void resample_chroma(const ColorView& frame, cv::Size work, cv::Mat& ycrcb, cv::Mat& chroma) {
+// One chroma component as a plane: in place when its samples are adjacent (planar formats),
+// else gathered sample by sample (NV12's pairs, YUY2's and UYVY's macro-pixels): a view with a
+// wider element would read past the last row's end.
+cv::Mat plane_of(const std::uint8_t* c, int w, int h, const ChromaView& view, cv::Mat& gathered) {
+  if (view.pixel_stride == 1) return wrap(c, w, h, view.stride, CV_8U);
+  gathered.create(h, w, CV_8U);
+  for (int y = 0; y < h; ++y) {
+    const std::uint8_t* in = c + static_cast<std::ptrdiff_t>(y) * view.stride;
+    std::uint8_t* out = gathered.ptr<std::uint8_t>(y);
+    for (int x = 0; x < w; ++x) out[x] = in[static_cast<std::ptrdiff_t>(x) * view.pixel_stride];
+  }
+  return gathered;
+}
+
+// The frame's chroma as Cr, Cb planes at the work size, into the two last channels of `out`.
+void resample_chroma(const ColorView& frame, WorkImages& out) {
   const ChromaView& c = frame.chroma;
   const int cw = (frame.luma.width + (1 << c.shift_x) - 1) >> c.shift_x;
   const int ch = (frame.luma.height + (1 << c.shift_y) - 1) >> c.shift_y;
-  cv::Mat planes[2];
-  if (c.pixel_stride == 2 && c.v == c.u + 1) {  // interleaved, U first (NV12)
-    cv::resize(wrap(c.u, cw, ch, c.stride, CV_8UC2), chroma, work, 0, 0, cv::INTER_AREA);
-    cv::split(chroma, planes);
-    std::swap(planes[0], planes[1]);
-  } else if (c.pixel_stride == 2 && c.u == c.v + 1) {  // interleaved, V first (NV21)
-    cv::resize(wrap(c.v, cw, ch, c.stride, CV_8UC2), chroma, work, 0, 0, cv::INTER_AREA);
-    cv::split(chroma, planes);
-  } else {
-    cv::resize(wrap(c.v, cw, ch, c.stride, CV_8U), planes[0], work, 0, 0, cv::INTER_AREA);
-    cv::resize(wrap(c.u, cw, ch, c.stride, CV_8U), planes[1], work, 0, 0, cv::INTER_AREA);
-  }
+  const cv::Size work = out.gray.size();
+  cv::resize(plane_of(c.v, cw, ch, c, out.chroma), out.cr, work, 0, 0, cv::INTER_AREA);
+  cv::resize(plane_of(c.u, cw, ch, c, out.chroma), out.cb, work, 0, 0, cv::INTER_AREA);
+  const cv::Mat planes[] = {out.cr, out.cb};
   const int from_to[] = {0, 1, 1, 2};
-  cv::mixChannels(planes, 2, &ycrcb, 1, from_to, 2);
+  cv::mixChannels(planes, 2, &out.ycrcb, 1, from_to, 2);
 }
 
 }  // namespace
@@ -49,7 +55,7 @@ void build_work_images(const ColorView& frame, int scale, WorkImages& out) {
   out.ycrcb.create(work, CV_8UC3);
   const int luma_to[] = {0, 0};
   cv::mixChannels(&out.gray, 1, &out.ycrcb, 1, luma_to, 1);
-  resample_chroma(frame, work, out.ycrcb, out.chroma);
+  resample_chroma(frame, out);
   cv::cvtColor(out.ycrcb, out.bgr, cv::COLOR_YCrCb2BGR);
 }
 

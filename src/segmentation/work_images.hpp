@@ -12,7 +12,7 @@ struct WorkImages {
   cv::Mat bgr, gray;  // ceil(width / scale) × ceil(height / scale)
   int scale = 1;      // work pixel (X, Y) covers frame pixels [sX, sX + s) × [sY, sY + s)
   int frame_width = 0, frame_height = 0;
-  cv::Mat ycrcb, chroma;  // buffers of build_work_images()
+  cv::Mat ycrcb, chroma, cr, cb;  // buffers of build_work_images()
 
   cv::Size size() const { return gray.size(); }
 };
