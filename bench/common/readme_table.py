@@ -81,7 +81,8 @@ def real_footage(root):
     meta_path = os.path.join(d, "meta.json")
     if os.path.exists(meta_path):
         with open(meta_path) as f:
-            out["date"] = json.load(f).get("measured", "")
+            meta = json.load(f)
+        out["date"], out["cores"] = meta.get("measured", ""), meta.get("cores")
     for c in clips:
         truth = scoring.load_truth(truth_dir, c)
         if not truth:
@@ -122,7 +123,8 @@ def davis(root):
     settings = res.meta.get("module", {}).get("settings", {})
     model = res.meta.get("model") or settings.get("object_model", settings.get("model", ""))
     return {"j": {k: res.overall(k, "j") for k in keys}, "sequences": len(res.sequences),
-            "model": model, "date": res.meta.get("date", "")}
+            "model": model, "date": res.meta.get("date", ""),
+            "cores": res.meta.get("machine", {}).get("cores")}
 
 
 # ---- speed -------------------------------------------------------------------------------------
@@ -143,7 +145,8 @@ def speed(root):
     meta = os.path.join(root, "docs", "performance", "meta.json")
     if os.path.exists(meta):
         with open(meta) as f:
-            out["date"] = json.load(f).get("measured", "")
+            meta = json.load(f)
+        out["date"], out["cores"] = meta.get("measured", ""), meta.get("cores")
     return out
 
 
@@ -204,18 +207,21 @@ def block(root=ROOT):
     scoring = _import("real", "scoring")
     model = (f" projtrack ran its `{dv['model']}` object model on DAVIS, its default "
              "elsewhere." if dv.get("model") else "")
-    when = "; ".join(s for s in (
-        f"real footage {real['date']}" if real.get("date") else "",
-        f"DAVIS {dv['date']}" if dv.get("date") else "",
-        f"speed {sp['date']}" if sp.get("date") else "") if s)
-    out += ["", f"A frame is **right** when the centroid is within {scoring.WITHIN:g}·√area of the "
-            f"true one and the area within {scoring.AREA_MIN:g}–{scoring.AREA_MAX:g}× the true "
-            "area (a box tracker's area is its box's, so \"centroid only\" is the fairer "
-            "comparison for them); **J** is DAVIS's overlap of the reported silhouette with the "
-            f"true one (0–100; a box tracker's silhouette is its box).{model} CSRT, KCF and MOSSE "
-            "are OpenCV's, started from the same box; \"" + DASH + "\": they take no mask or "
-            "click; \"" + MISSING + "\": not in the data. Runs: " + (when or MISSING) +
-            ", on two cores."]
+
+    def run(name, data):
+        cores = f" ({data['cores']} cores)" if data.get("cores") else ""
+        return f"{name} {data['date']}{cores}" if data.get("date") else ""
+    when = "; ".join(s for s in (run("real footage", real), run("DAVIS", dv),
+                                 run("speed", sp)) if s)
+    within = f"{scoring.WITHIN:g}·√area"
+    ratio = f"{scoring.AREA_MIN:g}–{scoring.AREA_MAX:g}×"
+    out += ["", "A frame is **right** (the reports' \"kept\") when the centroid is within "
+            f"{within} of the true one and the area within {ratio} the true area (a box "
+            "tracker's area is its box's, so \"centroid only\" is the fairer comparison for "
+            "them); **J** is DAVIS's overlap of the reported silhouette with the true one "
+            f"(0–100; a box tracker's silhouette is its box).{model} CSRT, KCF and MOSSE are "
+            "OpenCV's, started from the same box; \"" + DASH + "\": they take no mask or "
+            "click; \"" + MISSING + "\": not in the data. Runs: " + (when or MISSING) + "."]
     return "\n".join(out)
 
 
