@@ -35,7 +35,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PY = '/usr/bin/python3'
-DOCS = ['README.md', 'docs/element.md', 'docs/python.md']
+DOCS = ['README.md', 'docs/development.md', 'docs/element.md', 'docs/python.md']
 SAMPLE = re.compile(r'(<!-- sample: ([a-z0-9-]+) -->\n```[a-z]*\n)(.*?)(```\n<!-- end of sample -->)',
                     re.S)
 

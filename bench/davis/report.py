@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """The DAVIS benchmark's report: from run.py's data, docs/davis.md (tables per sequence and
 start, the means, the baselines and the published methods' J), its plot and contact sheets, and
-with --readme the README's summary between the DAVIS markers. Every number is computed from the
-run's data; what the run did not measure reads "not measured".
+with --summary the summary between the DAVIS markers in docs/measured.md. Every number is
+computed from the run's data; what the run did not measure reads "not measured".
 
-    report.py DATA_DIR DOC_DIR OUTPUT.md [--readme README.md]
+    report.py DATA_DIR DOC_DIR OUTPUT.md [--summary docs/measured.md]
 """
 import argparse
 import math
@@ -21,8 +21,8 @@ import figures  # noqa: E402
 import measures  # noqa: E402
 import results as R  # noqa: E402
 
-README_BEGIN = "<!-- DAVIS summary: written by bench/davis/report.py -->"
-README_END = "<!-- end of DAVIS summary -->"
+SUMMARY_BEGIN = "<!-- DAVIS summary: written by bench/davis/report.py -->"
+SUMMARY_END = "<!-- end of DAVIS summary -->"
 
 
 def fj(x):
@@ -92,9 +92,9 @@ those methods' results started from the first mask.
 
 **How to run.** `./run bench --davis [DIR]` (DIR in DAVIS layout: `JPEGImages/480p/<seq>/`,
 `Annotations/480p/<seq>/`; default `../shared/davis-dev` beside the repository; a few minutes)
-regenerates this page, its pictures in `docs/davis/` and the README's summary; `--model NAME`
-runs projtrack with another object model; `./run bench --davis --quick` is a smoke run of two
-sequences and a few frames into the build folder, docs untouched. The raw per-frame data of the
+regenerates this page, its pictures in `docs/davis/`, its summary in `docs/measured.md` and the
+README's table; `--model NAME` runs projtrack with another object model; `./run bench --davis
+--quick` is a smoke run of two sequences and a few frames into the build folder, docs untouched. The raw per-frame data of the
 run is `<build>/davis/frames.csv` (and `runs.csv`, `meta.json`); the doc folder keeps a copy
 (`docs/davis/frames.csv.gz`).
 """
@@ -175,20 +175,20 @@ def reading(res):
 
 
 def model_words(meta):
-    """Which object model the run measured, in the README's words."""
+    """Which object model the run measured, in the summary's words."""
     model = meta["model"] or meta["module"]["settings"].get("object_model",
                                                            meta["module"]["settings"].get("model"))
     return f"object model `{model}`" + ("" if meta["model"] else ", the default")
 
 
-def summary(res, published, methods):
-    """The README's block."""
+def summary(res, published, methods, link="davis.md"):
+    """The summary block of docs/measured.md (`link`: the path of docs/davis.md from there)."""
     def j(key):
         return fj(res.overall(key, "j"))
     pub = ", ".join(f"{m} {fmt_num(R.mean(published[m].get(s) for s in res.sequences), 1)}"
                     for m in methods[:2])
     return (f"On DAVIS 2016's development split ({len(res.sequences)} sequences, "
-            f"[docs/davis.md](docs/davis.md), run of {res.meta['date']}), J (region IoU, mean "
+            f"[davis.md]({link}), run of {res.meta['date']}), J (region IoU, mean "
             f"over sequences of frames 1..N-2): projtrack ({model_words(res.meta)}) from the first mask "
             f"{j(('projtrack', 'mask'))}, from its box {j(('projtrack', 'box'))}, from a click "
             f"{j(('projtrack', 'click'))}; the first mask held still {j(('hold', 'mask'))}; "
@@ -247,21 +247,21 @@ def write_doc(res, doc_dir, path):
     return published, methods
 
 
-def rewrite_readme(path, block):
+def rewrite_summary(path, block):
     text = open(path).read()
-    if README_BEGIN not in text or README_END not in text:
+    if SUMMARY_BEGIN not in text or SUMMARY_END not in text:
         sys.exit(f"bench/davis/report.py: {path} has no DAVIS markers")
-    head, rest = text.split(README_BEGIN, 1)
-    _, tail = rest.split(README_END, 1)
+    head, rest = text.split(SUMMARY_BEGIN, 1)
+    _, tail = rest.split(SUMMARY_END, 1)
     with open(path, "w") as f:
-        f.write(head + README_BEGIN + "\n" + block + "\n" + README_END + tail)
+        f.write(head + SUMMARY_BEGIN + "\n" + block + "\n" + SUMMARY_END + tail)
 
 
 def main():
     ap = argparse.ArgumentParser()
     for a in ("data_dir", "doc_dir", "output"):
         ap.add_argument(a)
-    ap.add_argument("--readme")
+    ap.add_argument("--summary")
     a = ap.parse_args()
     res = R.Results(a.data_dir)
     os.makedirs(a.doc_dir, exist_ok=True)
@@ -273,8 +273,9 @@ def main():
         with open(os.path.join(a.data_dir, "frames.csv"), "rb") as src, \
                 gzip.GzipFile(os.path.join(a.doc_dir, "frames.csv.gz"), "wb", mtime=0) as dst:
             shutil.copyfileobj(src, dst)
-    if a.readme:
-        rewrite_readme(a.readme, summary(res, published, methods))
+    if a.summary:
+        link = os.path.relpath(a.output, os.path.dirname(os.path.abspath(a.summary)))
+        rewrite_summary(a.summary, summary(res, published, methods, link))
 
 
 if __name__ == "__main__":

@@ -1,15 +1,15 @@
 #!/usr/bin/python3
 """Writes docs/real_footage.md from a real-footage run (./run bench --real).
 
-Usage: bench/real/report.py DATA_DIR TRUTH_DIR DOC_DIR OUTPUT.md [--readme README.md]
+Usage: bench/real/report.py DATA_DIR TRUTH_DIR DOC_DIR OUTPUT.md [--summary docs/measured.md]
        bench/real/report.py DATA_DIR TRUTH_DIR DOC_DIR OUTPUT.md --requests FILE
 
 DATA_DIR holds prepare.py's plan and truth and projtrack-real's runs.csv, speed.csv, meta.json
 and frames/ (the frames `projtrack-real --render` drew for the contact sheets). With --requests,
 writes only the list of those frames (FILE) for projtrack-real. Otherwise writes OUTPUT.md and,
 under DOC_DIR, sheets/ and the data (runs.csv.gz, speed.csv, meta.json, plan.csv, clips.csv);
-with --readme, rewrites the README's block between the real-footage markers. Every number and
-verdict is computed here from the measurements; missing data reads "not measured".
+with --summary, rewrites the block between the real-footage markers in docs/measured.md. Every
+number and verdict is computed here from the measurements; missing data reads "not measured".
 """
 import argparse
 import gzip
@@ -28,8 +28,8 @@ from truth_geometry import read_outlines  # noqa: E402
 from sheets import contact_sheet, pick_frames, slug, write_requests  # noqa: E402
 from targets import GOAL_NO_SEED, START_TEXT  # noqa: E402
 
-README_BEGIN = "<!-- real-footage summary: written by bench/real/report.py -->"
-README_END = "<!-- end of real-footage summary -->"
+SUMMARY_BEGIN = "<!-- real-footage summary: written by bench/real/report.py -->"
+SUMMARY_END = "<!-- end of real-footage summary -->"
 MOST_SHEETS = 6  # a clip's contact sheets, at most
 
 
@@ -161,14 +161,14 @@ def outlines(data_dir, entry):
     return read_outlines(p) if os.path.exists(p) else {}
 
 
-def rewrite_readme(path, block):
+def rewrite_summary(path, block):
     text = open(path).read()
-    if README_BEGIN not in text or README_END not in text:
+    if SUMMARY_BEGIN not in text or SUMMARY_END not in text:
         sys.exit(f"bench/real/report.py: {path} has no real-footage markers")
-    head, rest = text.split(README_BEGIN, 1)
-    _, tail = rest.split(README_END, 1)
+    head, rest = text.split(SUMMARY_BEGIN, 1)
+    _, tail = rest.split(SUMMARY_END, 1)
     with open(path, "w") as f:
-        f.write(head + README_BEGIN + "\n" + block + "\n" + README_END + tail)
+        f.write(head + SUMMARY_BEGIN + "\n" + block + "\n" + SUMMARY_END + tail)
 
 
 def copy_data(data_dir, doc_dir):
@@ -184,7 +184,7 @@ def main():
     ap = argparse.ArgumentParser()
     for a in ("data_dir", "truth_dir", "doc_dir", "output"):
         ap.add_argument(a)
-    ap.add_argument("--readme")
+    ap.add_argument("--summary")
     ap.add_argument("--requests")
     a = ap.parse_args()
     res = Results(a.data_dir)
@@ -196,8 +196,9 @@ def main():
     doc.write(a.output)
     if os.path.abspath(a.doc_dir) != os.path.abspath(a.data_dir):
         copy_data(a.data_dir, a.doc_dir)
-    if a.readme:
-        rewrite_readme(a.readme, sections.summary(res))
+    if a.summary:
+        link = os.path.relpath(a.output, os.path.dirname(os.path.abspath(a.summary)))
+        rewrite_summary(a.summary, sections.summary(res, link))
 
 
 if __name__ == "__main__":

@@ -1,4 +1,4 @@
-"""The sections of docs/real_footage.md and the README's summary, each a function of the run's
+"""The sections of docs/real_footage.md and docs/measured.md's summary, each a function of the run's
 Results (results.py) writing into a document (report.Document: .w(line), .res)."""
 import math
 
@@ -307,15 +307,16 @@ def plain_words(res):
     return [f"- {text[g]}: {', '.join(cs) if cs else 'none'}" for g, cs in groups.items()]
 
 
-def summary(res):
-    """The README's block: per start how many runs meet the targets and the worst, the other
-    verdicts, and per clip what works."""
+def summary(res, link="real_footage.md"):
+    """The summary block of docs/measured.md (`link`: the path of docs/real_footage.md from
+    there): per start how many runs meet the targets and the worst, the other verdicts, and per
+    clip what works."""
     s = target_summary(res)
     met = sum(r[3] == TARGET.holds for r in s.rows)
     out = [f"On the real-footage development set ({len(res.clips)} clips from Debian's "
            "opencv-doc, python3-mecavideo and visp-images-data, each with its variants; "
-           f"[docs/real_footage.md](docs/real_footage.md)), the element meets {met} of its "
-           f"{len(s.rows)} targets. A run clicked on the object or started from its box meets "
+           f"[real_footage.md]({link})), the element meets {met} of the "
+           f"{len(s.rows)} targets set for it there. A run clicked on the object or started from its box meets "
            f"its own when it keeps ≥ {fmt_pct(GOAL_KEPT)} of the frames in which the object is "
            f"in view (≥ {fmt_pct(GOAL_KEPT_THROWN)} on the thrown ball), its median centroid "
            f"error is ≤ {fmt_pct(GOAL_MEDIAN)} of √area and its area within ±25 % on ≥ "
@@ -332,9 +333,9 @@ def summary(res):
         else:
             out.append(f"- {what}: {shown} (goal {goal}): {v.strip('*')}")
     out += ["", "In plain words, from the user's point or box (kept: the share of in-view frames "
-            "in which the centroid and the area are right, the new measure):", ""]
+            "in which the centroid and the area are right):", ""]
     out += plain_words(res)
-    out += ["", "Kept (new measure) when clicked at the deepest point / from the true box / with "
+    out += ["", "Kept when clicked at the deepest point / from the true box / with "
             "no seed, on the clip as decoded (the range over its variants):", ""]
     for c in res.clips:
         if not res.truth.get(c):

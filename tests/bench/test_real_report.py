@@ -206,7 +206,7 @@ res, text, v = render("slow", runs=edit(base_runs(), "cube", "cvtracker MOSSE", 
                                         us=1500.0))
 assert v[MOSSE] == NOT_MET, v
 
-# The README's block: every target counted, from the same rows.
+# docs/measured.md's block: every target counted, from the same rows.
 block = sections.summary(res)
 assert "the element meets" in block and "cube (" in block, block
 print("real-footage report: ok")

@@ -173,7 +173,7 @@ def check_pointer_drag(script):
 
 
 def check_recipes(cursor_script, out_dir):
-    """The README's recipes, with videotestsrc where they use a camera: record the overlay to a
+    """The recipes of docs/element.md, with videotestsrc where they use a camera: record the overlay to a
     WebM file; run cursor3d.py on a file for a CSV of every frame."""
     os.makedirs(out_dir, exist_ok=True)
     tracked = os.path.join(out_dir, 'tracked.webm')
