@@ -33,7 +33,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
-from report_kit import MISSING, fmt_num, fmt_pct, missing  # noqa: E402
+from report_kit import MISSING, fmt_num, fmt_pct, missing, replace_between  # noqa: E402
 
 BEGIN = "<!-- measured: written by bench/common/readme_table.py from the benchmarks' data -->"
 END = "<!-- end of measured -->"
@@ -226,16 +226,8 @@ def block(root=ROOT):
 
 
 def rewrite(path, text):
-    doc = open(path).read()
-    if BEGIN not in doc or END not in doc:
-        sys.exit(f"readme_table.py: {path} has no measured markers")
-    head, rest = doc.split(BEGIN, 1)
-    _, tail = rest.split(END, 1)
-    new = head + BEGIN + "\n" + text + "\n" + END + tail
-    if new != doc:
-        with open(path, "w") as f:
-            f.write(new)
-    return new != doc
+    """Writes the table into README.md; True when it changed."""
+    return replace_between(path, BEGIN, END, text, "readme_table.py")
 
 
 def shown(path):

@@ -108,3 +108,20 @@ def load_meta(results_dir):
     """The run's settings and machine, as the benchmark recorded them (meta.json)."""
     with open(os.path.join(results_dir, "meta.json")) as f:
         return json.load(f)
+
+
+def replace_between(path, begin, end, block, who):
+    """Writes `block` between the marker lines `begin` and `end` of the file at `path` (each
+    marker then its own line); exits naming `who` when the file has no such markers. True when the
+    file changed."""
+    with open(path) as f:
+        text = f.read()
+    if begin not in text or end not in text:
+        raise SystemExit(f"{who}: {path} has no markers {begin} ... {end}")
+    head, rest = text.split(begin, 1)
+    _, tail = rest.split(end, 1)
+    new = head + begin + "\n" + block + "\n" + end + tail
+    if new != text:
+        with open(path, "w") as f:
+            f.write(new)
+    return new != text

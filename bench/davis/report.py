@@ -14,7 +14,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from report_kit import (DASH, MISSING, fmt_num, fmt_pct, fmt_res, frame_size,  # noqa: E402
-                        missing)
+                        missing, replace_between)
 
 import dataset  # noqa: E402
 import figures  # noqa: E402
@@ -248,13 +248,7 @@ def write_doc(res, doc_dir, path):
 
 
 def rewrite_summary(path, block):
-    text = open(path).read()
-    if SUMMARY_BEGIN not in text or SUMMARY_END not in text:
-        sys.exit(f"bench/davis/report.py: {path} has no DAVIS markers")
-    head, rest = text.split(SUMMARY_BEGIN, 1)
-    _, tail = rest.split(SUMMARY_END, 1)
-    with open(path, "w") as f:
-        f.write(head + SUMMARY_BEGIN + "\n" + block + "\n" + SUMMARY_END + tail)
+    replace_between(path, SUMMARY_BEGIN, SUMMARY_END, block, "bench/davis/report.py")
 
 
 def main():

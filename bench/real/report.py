@@ -27,6 +27,7 @@ from scoring import AREA_TOLERANCE, area_ratio, categories  # noqa: E402
 from truth_geometry import read_outlines  # noqa: E402
 from sheets import contact_sheet, pick_frames, slug, write_requests  # noqa: E402
 from targets import GOAL_NO_SEED, START_TEXT  # noqa: E402
+from report_kit import replace_between  # noqa: E402
 
 SUMMARY_BEGIN = "<!-- real-footage summary: written by bench/real/report.py -->"
 SUMMARY_END = "<!-- end of real-footage summary -->"
@@ -162,13 +163,7 @@ def outlines(data_dir, entry):
 
 
 def rewrite_summary(path, block):
-    text = open(path).read()
-    if SUMMARY_BEGIN not in text or SUMMARY_END not in text:
-        sys.exit(f"bench/real/report.py: {path} has no real-footage markers")
-    head, rest = text.split(SUMMARY_BEGIN, 1)
-    _, tail = rest.split(SUMMARY_END, 1)
-    with open(path, "w") as f:
-        f.write(head + SUMMARY_BEGIN + "\n" + block + "\n" + SUMMARY_END + tail)
+    replace_between(path, SUMMARY_BEGIN, SUMMARY_END, block, "bench/real/report.py")
 
 
 def copy_data(data_dir, doc_dir):
