@@ -11,7 +11,9 @@ class DenseFlow {
  public:
   // The flow from `gray` (this frame, work scale, CV_8U) back to the last frame given: for each
   // pixel of this frame, where it was on the last one (CV_32FC2, work pixels). False, with no
-  // flow, on the first frame and after a change of size (nothing to compare with).
+  // flow, on the first frame, after a change of size (nothing to compare with) and on a frame
+  // whose smaller side is under kLeastSide (DIS refuses it).
+  static constexpr int kLeastSide = 16;
   bool compute(const cv::Mat& gray);
   const cv::Mat& backward() const { return flow_; }
   // Forgets the last frame: the next compute() starts afresh.

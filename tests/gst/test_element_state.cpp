@@ -45,7 +45,7 @@ struct Frame {
   std::vector<std::string> warnings;
   bool message = false, meta = false, acquired = false, gap = false;
   int track_id = 0;
-  double cx = NAN, cy = NAN, depth = NAN;
+  double cx = NAN, cy = NAN, depth = NAN, area = NAN;
   GstBuffer* out = nullptr;
   ~Frame() {
     if (out) gst_buffer_unref(out);
@@ -74,6 +74,7 @@ class State : public projtrack::test::ProjtrackHarness {
         gst_structure_get_double(s, "centroid-x", &f.cx);
         gst_structure_get_double(s, "centroid-y", &f.cy);
         gst_structure_get_double(s, "depth", &f.depth);
+        gst_structure_get_double(s, "area", &f.area);
       } else if (GST_MESSAGE_TYPE(m) == GST_MESSAGE_WARNING) {
         f.warnings.push_back(projtrack::test::warning_text(m));
       }
@@ -217,6 +218,35 @@ TEST_F(State, ANewFormatKeepsTheTrackOfAStillObject) {
       EXPECT_EQ(f.track_id, id);
       EXPECT_NEAR(f.cx, 69.5, 1.5);
     }
+  }
+}
+
+// The flow model (object-model=flow) through the element: a box start, a moving disc in every
+// chroma layout the element reads (planar, pairs, macro-pixels, packed RGB, gray), then a new
+// resolution; each frame's message says where the disc is and how large, never a NaN.
+TEST_F(State, TheFlowModelFollowsAMovingDiscInEveryLayoutAndThroughANewResolution) {
+  for (const char* format : {"I420", "NV12", "YUY2", "RGB", "GRAY8"}) {
+    SCOPED_TRACE(format);
+    gst_util_set_object_arg(G_OBJECT(h_->element), "object-model", "flow");
+    gst_harness_set_src_caps_str(h_, video_caps(format, 320, 240).c_str());
+    g_signal_emit_by_name(h_->element, "track-box", 60, 70, 80, 80);
+    for (int i = 0; i < 12; ++i) {
+      Frame f;
+      const double cx = 100 + 3 * i, cy = 110 + i;
+      push(f, disc(format, 320, 240, cx, cy, 36));
+      ASSERT_EQ(f.status, "ok") << "frame " << i << ": " << f.detail;
+      EXPECT_NEAR(f.cx, cx - 0.5, 3) << "frame " << i;
+      EXPECT_NEAR(f.cy, cy - 0.5, 3) << "frame " << i;
+      EXPECT_NEAR(f.area / (M_PI * 36 * 36), 1, 0.2) << "frame " << i;
+    }
+    gst_harness_set_src_caps_str(h_, video_caps(format, 160, 120).c_str());
+    for (int i = 12; i < 16; ++i) {
+      Frame f;
+      push(f, disc(format, 160, 120, (100 + 3 * i) / 2.0, (110 + i) / 2.0, 18));
+      EXPECT_EQ(f.status, "ok") << "frame " << i << ": " << f.detail;
+      EXPECT_NEAR(f.cx, (100 + 3 * i) / 2.0 - 0.5, 3) << "frame " << i;
+    }
+    g_signal_emit_by_name(h_->element, "reset", nullptr);
   }
 }
 

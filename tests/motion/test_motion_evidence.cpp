@@ -37,6 +37,21 @@ TEST(DenseFlow, ReadsAWholePictureMoveAsTheMoveBack) {
   EXPECT_FALSE(flow.compute(texture({160, 120}, 2)));  // a new size: no flow
 }
 
+TEST(DenseFlow, TinyFramesAndNewSizesGiveNoFlowAndNoException) {
+  DenseFlow flow;
+  const cv::Mat tiny = texture({12, 10}, 3);
+  EXPECT_FALSE(flow.compute(tiny));
+  EXPECT_FALSE(flow.compute(tiny));  // DIS refuses frames this small: no flow, nothing thrown
+  // Sizes that change back and forth, with a reset between (a new track): each comparable pair
+  // gives a flow (a reused DIS once crashed here).
+  for (const cv::Size size : {cv::Size(320, 240), cv::Size(160, 120), cv::Size(320, 240)}) {
+    const cv::Mat a = texture(size, 4);
+    flow.compute(a);
+    for (int i = 1; i <= 3; ++i) EXPECT_TRUE(flow.compute(shifted(a, i, 0)));
+    flow.reset();
+  }
+}
+
 TEST(CarryAlongFlow, MovesTheSilhouetteWhereItsPixelsWent) {
   cv::Mat last = cv::Mat::zeros(100, 100, CV_32F);
   last(cv::Rect(20, 30, 10, 10)).setTo(1);
