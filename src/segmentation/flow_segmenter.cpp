@@ -59,8 +59,10 @@ void FlowSegmenter::predict(const FlowModelParams& p) {
   if (!split_.valid || p.memory_weight <= 0) return;
   // The backward flow says where the object came from: it moved by the opposite.
   const cv::Matx23f move(1, 0, -split_.object.x, 0, 1, -split_.object.y);
-  cv::warpAffine(memory_, memory_, move, memory_.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
-  cv::max(prior_, memory_ * p.memory_weight, prior_);
+  cv::warpAffine(memory_, moved_, move, memory_.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+  cv::swap(memory_, moved_);
+  cv::multiply(memory_, p.memory_weight, moved_);
+  cv::max(prior_, moved_, prior_);
 }
 
 void FlowSegmenter::remember(const FlowModelParams& p) {

@@ -45,6 +45,7 @@ class FlowSegmenter {
   cv::Mat last_;        // the last silhouette, CV_32F 0 or 1
   cv::Mat mask_;        // this frame's, CV_8U 0 or 255
   cv::Mat memory_;      // the fullest recent silhouette, CV_32F, moved with the object
+  cv::Mat moved_;       // a buffer: the memory moved, then weighed
   double fullest_ = 0;  // the fullest recent area, fading
   MotionSplit split_;
   cv::Mat map_, prior_, log_odds_, inside_, labels_, stats_, centroids_;  // buffers
