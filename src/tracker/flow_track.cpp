@@ -74,12 +74,9 @@ Features Tracker::Impl::estimate_flow_silhouette(const ColorView& frame, const F
 
 TrackResult Tracker::Impl::start_flow(const ColorView& frame, EdgeSource& edges,
                                       const FrameInput& in) {
+  if (waits_for_user(state, in.tp))
+    return not_started(kNoInnerPoint, false, in.tp, TrackStatus::NoInnerPoint);
   TrackResult r;
-  if (waits_for_user(state, in.tp)) {
-    r.status = TrackStatus::NoInnerPoint;
-    r.detail = kNoInnerPoint;
-    return r;
-  }
   const int w = frame.luma.width, h = frame.luma.height;
   const bool seeded = state.track().inner.has_value();
   AppearanceStart start = first_flow_silhouette(frame, edges, in);

@@ -193,13 +193,14 @@ void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult
   if (next.drop) drop_refused_track(state);
 }
 
-TrackResult Tracker::Impl::not_started(std::string why, bool seeded, const TrackerParams& tp) {
+TrackResult Tracker::Impl::not_started(std::string why, bool seeded, const TrackerParams& tp,
+                                       TrackStatus status) {
   TrackResult r;
   if (seeded) {  // the user's start: keep trying it for a while, as a refused estimate
     refuse(std::move(why), tp, r);
     return r;
   }
-  r.status = TrackStatus::Searching;
+  r.status = status;
   r.detail = std::move(why);
   return r;
 }

@@ -86,8 +86,9 @@ struct Tracker::Impl {
               TrackStatus status = TrackStatus::Lost, bool drop_now = false);
   void stopped(const Features& f, const TrackerParams& tp, TrackResult& r);
   // A start that found nothing acceptable (`why`): the user's start is refused (tried again for
-  // a while), a search goes on searching.
-  TrackResult not_started(std::string why, bool seeded, const TrackerParams& tp);
+  // a while), a search goes on with `status` (Searching; NoInnerPoint while waiting for one).
+  TrackResult not_started(std::string why, bool seeded, const TrackerParams& tp,
+                          TrackStatus status = TrackStatus::Searching);
   bool work_stopped() const { return work.budget.ran_out() || work.budget.interrupted(); }
 };
 
