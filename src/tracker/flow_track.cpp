@@ -1,10 +1,13 @@
 // The flow model's step: the object's silhouette carried along the picture's motion and cut from
 // its surroundings (segmentation/flow_segmenter), and the estimator on that silhouette.
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 #include "core/plausibility.hpp"
 #include "core/work_frame.hpp"
 #include "segmentation/box_start.hpp"
+#include "segmentation/point_start.hpp"
 #include "tracker/tracker_impl.hpp"
 
 namespace projtrack {
@@ -51,13 +54,37 @@ AppearanceStart Tracker::Impl::first_flow_silhouette(const ColorView& frame, Edg
   }
   // A point, or none: the appearance model finds the object's first silhouette; its colours stay
   // known to find the object again after a loss.
+  const std::optional<Point2i> point = t.inner;
   start = start_appearance_track(state, as_appearance_reads(frame, in.tp), edges, in.tp, work.first,
                                  work.silhouette);
   if (start.found) {
     mask_at_scale(work.silhouette, state.object.scale(), img, work.inside);
     state.object.forget_position();
   }
+  if (point) choose_at_point(*point, start);
   return start;
+}
+
+void Tracker::Impl::choose_at_point(Point2i point, AppearanceStart& start) {
+  // The appearance model's region is one colour region (a patch of a cow, nothing of a camel of
+  // the sand's colour): GrabCut around the point at a tenth to two fifths of the frame's height
+  // competes with it, the candidate whose colours stand farthest apart from its ring's winning.
+  const WorkImages& img = work.images;
+  const cv::Point p(std::clamp(point.x / img.scale, 0, img.bgr.cols - 1),
+                    std::clamp(point.y / img.scale, 0, img.bgr.rows - 1));
+  const int h = img.bgr.rows;
+  double best = start.found ? separation_from_ring(img.bgr, work.inside) : -1;
+  for (cv::Mat& candidate : objects_at_point(img, p, {h / 10, h / 5, 3 * h / 10, 2 * h / 5})) {
+    if (candidate.empty()) continue;
+    const double s = separation_from_ring(img.bgr, candidate);
+    if (s > best) {
+      best = s;
+      cv::swap(work.inside, candidate);
+      start.found = true;
+      start.resumed = false;
+      start.why.clear();
+    }
+  }
 }
 
 Features Tracker::Impl::estimate_flow_silhouette(const ColorView& frame, const FrameInput& in) {

@@ -7,6 +7,7 @@
 
 #include "segmentation/box_start.hpp"
 #include "segmentation/flow_segmenter.hpp"
+#include "segmentation/point_start.hpp"
 
 namespace projtrack {
 namespace {
@@ -140,6 +141,31 @@ TEST(ObjectInBox, GrabCutTakesTheObjectNotTheBox) {
   // A box too small to cut: the ellipse inscribed in it, said by the result.
   EXPECT_EQ(object_in_box(images_of(bgr), {10, 10, 3, 3}, inside), BoxStart::Ellipse);
   EXPECT_GT(cv::countNonZero(inside), 0);
+}
+
+TEST(ObjectsAtPoint, TheCandidateThatStandsApartFromItsRingIsTheObject) {
+  const Scene scene;
+  cv::Mat bgr, truth;
+  scene.render(0, bgr, truth);
+  const WorkImages img = images_of(bgr);
+  cv::Mat red = truth.clone();  // the disc's reddened half, which colour tells apart
+  red(cv::Rect(80, 0, 240, 240)).setTo(0);
+  const std::vector<cv::Mat> found = objects_at_point(img, {62, 90}, {12, 24, 48, 72});
+  ASSERT_EQ(found.size(), 4u);
+  double best = -1;
+  cv::Mat chosen;
+  for (const cv::Mat& c : found) {
+    if (c.empty()) continue;
+    EXPECT_NE(c.at<std::uint8_t>(90, 62), 0);  // every candidate holds the point
+    if (const double s = separation_from_ring(img.bgr, c); s > best) best = s, chosen = c;
+  }
+  ASSERT_FALSE(chosen.empty());
+  EXPECT_GT(iou(chosen, red), 0.6);
+  // A square of background has colours like its ring's; the red half's stand apart.
+  cv::Mat background = cv::Mat::zeros(truth.size(), CV_8U);
+  background(cv::Rect(200, 150, 40, 40)).setTo(255);
+  EXPECT_LT(separation_from_ring(img.bgr, background), separation_from_ring(img.bgr, red));
+  EXPECT_EQ(separation_from_ring(img.bgr, cv::Mat::zeros(truth.size(), CV_8U)), -1);
 }
 
 }  // namespace
