@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""The DAVIS benchmark's runners (bench/davis/runners.py) without the real module: a stub
-`projtrack` that takes a mask start stands in for the API the lead is adding, so that the mask
-start is known to be measured, and scored right, once the module takes it; a stub that refuses a
-mask (as today's module does, with a TypeError) leaves the start not measured, not zero. Also the
-published table's parser (dataset.published) on a small README.
+"""The DAVIS benchmark's runners (bench/davis/runners.py) on a stand-in `projtrack` module whose
+tracker holds the mask it was started from, so the expected J is known exactly: a mask start is
+measured and scored right, and a module that refuses a mask start (as one built before the mask
+start did, with a TypeError) leaves that start not measured, never zero. The real module runs in
+davis_quick. Also the published table's parser (dataset.published) on a small README.
 
     test_davis_runners.py BENCH_DAVIS_DIR OUT_DIR
 """
@@ -52,9 +52,9 @@ class HoldingTracker:
         return Result(self.mask)
 
 
-stub = types.ModuleType("projtrack")
-stub.Tracker = HoldingTracker
-sys.modules["projtrack"] = stub
+stand_in = types.ModuleType("projtrack")
+stand_in.Tracker = HoldingTracker
+sys.modules["projtrack"] = stand_in
 
 h, w = 48, 64
 frames = [np.full((h, w, 3), 100, np.uint8) for _ in range(6)]
