@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 
+#include "segmentation/grab_cut.hpp"
+
 namespace projtrack {
 
 namespace {
@@ -18,12 +20,8 @@ constexpr double kCollapsed = 0.05;
 // GrabCut's object in `box` (ROI coordinates), into `object`; false when it cannot run.
 bool grab_cut(const cv::Mat& bgr, const cv::Rect& box, cv::Mat& object) {
   if (box.width < 4 || box.height < 4 || box.area() >= bgr.rows * bgr.cols) return false;
-  cv::Mat labels, bgd, fgd;
-  try {
-    cv::grabCut(bgr, labels, box, bgd, fgd, kRounds, cv::GC_INIT_WITH_RECT);
-  } catch (const cv::Exception&) {
-    return false;  // one colour in and around the box: no mixture to learn
-  }
+  cv::Mat labels;
+  if (!repeatable_grab_cut(bgr, labels, box, kRounds, cv::GC_INIT_WITH_RECT)) return false;
   object = (labels & 1) != 0;
   return true;
 }

@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "segmentation/colour_mixture.hpp"
+#include "segmentation/grab_cut.hpp"
 
 namespace projtrack {
 
@@ -48,10 +49,8 @@ std::vector<cv::Mat> objects_at_point(const WorkImages& img, cv::Point p,
     // GrabCut reads the square and as much around it again: the background it learns from.
     const int reach = 3 * half;
     const cv::Rect roi = cv::Rect(p.x - reach, p.y - reach, 2 * reach + 1, 2 * reach + 1) & frame;
-    cv::Mat sub = labels(roi).clone(), bgd, fgd, object;
-    try {
-      cv::grabCut(img.bgr(roi), sub, cv::Rect(), bgd, fgd, kRounds, cv::GC_INIT_WITH_MASK);
-    } catch (const cv::Exception&) {
+    cv::Mat sub = labels(roi).clone(), object;
+    if (!repeatable_grab_cut(img.bgr(roi), sub, cv::Rect(), kRounds, cv::GC_INIT_WITH_MASK)) {
       found.emplace_back();
       continue;  // one colour around the point: nothing to cut
     }

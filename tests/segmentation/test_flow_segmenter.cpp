@@ -143,6 +143,36 @@ TEST(ObjectInBox, GrabCutTakesTheObjectNotTheBox) {
   EXPECT_GT(cv::countNonZero(inside), 0);
 }
 
+// Discs of many colours on a blurred noise: a picture whose colour mixtures k-means can seed in
+// several ways (GrabCut's result on it changes with the RNG's state).
+cv::Mat confetti() {
+  cv::Mat bgr(120, 160, CV_8UC3);
+  cv::RNG rng(2);
+  rng.fill(bgr, cv::RNG::UNIFORM, 0, 256);
+  cv::GaussianBlur(bgr, bgr, {0, 0}, 2.0);
+  for (int k = 0; k < 25; ++k)
+    cv::circle(bgr, {rng.uniform(0, 160), rng.uniform(0, 120)}, rng.uniform(4, 20),
+               cv::Scalar(rng.uniform(0, 256), rng.uniform(0, 256), rng.uniform(0, 256)),
+               cv::FILLED);
+  return bgr;
+}
+
+TEST(ObjectInBox, TheSameBoxGivesTheSameObjectWhateverDrewFromTheRNGBefore) {
+  const WorkImages img = images_of(confetti());
+  std::vector<cv::Mat> boxes, points;
+  for (const std::uint64_t state : {1, 2, 3, 987654321}) {
+    cv::theRNG().state = state;
+    boxes.emplace_back();
+    object_in_box(img, {40, 30, 80, 60}, boxes.back());
+    points.push_back(objects_at_point(img, {80, 60}, {12, 24})[1]);
+    EXPECT_EQ(cv::theRNG().state, state);  // the caller's RNG is left as it was
+  }
+  for (std::size_t i = 1; i < boxes.size(); ++i) {
+    EXPECT_EQ(cv::countNonZero(boxes[i] != boxes[0]), 0) << "box, RNG state " << i;
+    EXPECT_EQ(cv::countNonZero(points[i] != points[0]), 0) << "point, RNG state " << i;
+  }
+}
+
 TEST(ObjectsAtPoint, TheCandidateThatStandsApartFromItsRingIsTheObject) {
   const Scene scene;
   cv::Mat bgr, truth;
