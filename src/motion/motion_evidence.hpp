@@ -6,6 +6,9 @@
 
 namespace projtrack {
 
+// The bounding box of the pixels of `values` (one channel) above 0; `buffer` is a buffer.
+cv::Rect support_of(const cv::Mat& values, cv::Mat& buffer);
+
 // `last` (CV_32F, values in [0, 1], the last frame's silhouette) moved to this frame along the
 // backward flow `flow` (DenseFlow::backward()): each pixel takes the value where it came from
 // (0 from outside the frame). `map` is a buffer.

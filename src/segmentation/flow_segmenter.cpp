@@ -39,8 +39,12 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
     forget(false);
     return false;
   }
-  weigh_evidence(img, area, p);
-  cv::compare(log_odds_, 0, mask_, cv::CMP_GT);
+  const int blur = static_cast<int>(p.prior_spread * std::sqrt(area)) | 1;
+  reach_ = reach_of_prior(2 * blur);
+  weigh_evidence(img, blur, p);
+  mask_.create(img.size(), CV_8U);
+  mask_.setTo(0);
+  cv::compare(log_odds_(reach_), 0, mask_(reach_), cv::CMP_GT);
   keep_pieces_on_prior(p.keep_share);
   if (cv::countNonZero(mask_) == 0) {
     forget(false);
@@ -58,11 +62,28 @@ void FlowSegmenter::predict(const FlowModelParams& p) {
   split_ = split_motion(flow_.backward(), inside_, p.motion_ring);
   if (!split_.valid || p.memory_weight <= 0) return;
   // The backward flow says where the object came from: it moved by the opposite.
-  const cv::Matx23f move(1, 0, -split_.object.x, 0, 1, -split_.object.y);
-  cv::warpAffine(memory_, moved_, move, memory_.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+  // Only the memory's box, moved and grown by a pixel for the interpolation, is warped.
+  const cv::Point2f by = -split_.object;
+  const cv::Rect held = support_of(memory_, support_);
+  moved_.create(memory_.size(), CV_32F);
+  moved_.setTo(0);
+  const cv::Rect to =
+      cv::Rect(held.x + static_cast<int>(std::floor(by.x)) - 1,
+               held.y + static_cast<int>(std::floor(by.y)) - 1, held.width + 3, held.height + 3) &
+      cv::Rect(0, 0, memory_.cols, memory_.rows);
+  if (!held.empty() && !to.empty()) {
+    const cv::Matx23f move(1, 0, to.x - by.x, 0, 1, to.y - by.y);
+    cv::Mat into = moved_(to);
+    cv::warpAffine(memory_, into, move, to.size(), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
+                   cv::BORDER_CONSTANT, 0);
+  }
   cv::swap(memory_, moved_);
-  cv::multiply(memory_, p.memory_weight, moved_);
-  cv::max(prior_, moved_, prior_);
+  const auto weight = static_cast<float>(p.memory_weight);
+  for (int y = to.y; y < to.y + to.height; ++y) {
+    float* q = prior_.ptr<float>(y);
+    const float* m = memory_.ptr<float>(y);
+    for (int x = to.x; x < to.x + to.width; ++x) q[x] = std::max(q[x], weight * m[x]);
+  }
 }
 
 void FlowSegmenter::remember(const FlowModelParams& p) {
@@ -71,42 +92,51 @@ void FlowSegmenter::remember(const FlowModelParams& p) {
   if (last_.size() != memory_.size() || area >= p.memory_refresh * fullest_) last_.copyTo(memory_);
 }
 
-void FlowSegmenter::weigh_evidence(const WorkImages& img, double area, const FlowModelParams& p) {
+cv::Rect FlowSegmenter::reach_of_prior(int blur) {
+  // The object can be only where its prior reaches: a piece beyond it holds none of the prior and
+  // is dropped, and one joined to the object grows at most a blur's width a frame.
+  cv::compare(prior_, 0, support_, cv::CMP_GT);
+  const cv::Rect held = cv::boundingRect(support_);
+  const cv::Rect grown(held.x - blur, held.y - blur, held.width + 2 * blur, held.height + 2 * blur);
+  return grown & cv::Rect(0, 0, prior_.cols, prior_.rows);
+}
+
+void FlowSegmenter::weigh_evidence(const WorkImages& img, int blur, const FlowModelParams& p) {
   // The prior: the carried silhouette blurred as far as the object may have moved beyond the
-  // flow, as log-odds.
-  const int k = static_cast<int>(p.prior_spread * std::sqrt(area)) | 1;
-  if (k > 1)
-    cv::GaussianBlur(prior_, log_odds_, {k, k}, 0);
+  // flow, as log-odds; within the prior's reach only (the blur reads the pixels around it).
+  log_odds_.create(prior_.size(), CV_32F);
+  cv::Mat odds = log_odds_(reach_);
+  if (blur > 1)
+    cv::GaussianBlur(prior_(reach_), odds, {blur, blur}, 0);
   else
-    prior_.copyTo(log_odds_);
-  const float lo = static_cast<float>(p.prior_floor), hi = 1 - lo;
-  for (int y = 0; y < log_odds_.rows; ++y) {
-    float* l = log_odds_.ptr<float>(y);
-    for (int x = 0; x < log_odds_.cols; ++x) {
-      const float q = std::clamp(l[x], lo, hi);
-      l[x] = std::log(q / (1 - q));
-    }
+    prior_(reach_).copyTo(odds);
+  prior_log_odds_.build(p.prior_floor);
+  for (int y = 0; y < odds.rows; ++y) {
+    float* l = odds.ptr<float>(y);
+    for (int x = 0; x < odds.cols; ++x) l[x] = prior_log_odds_(l[x]);
   }
-  colours_.add_evidence(img.bgr, p.first_share, log_odds_);
-  add_motion_evidence(flow_.backward(), split_, p.motion_weight, p.min_separation, log_odds_);
+  colours_.add_evidence(img.bgr(reach_), p.first_share, odds);
+  add_motion_evidence(flow_.backward()(reach_), split_, p.motion_weight, p.min_separation, odds);
 }
 
 void FlowSegmenter::keep_pieces_on_prior(double keep_share) {
-  const int n = cv::connectedComponentsWithStats(mask_, labels_, stats_, centroids_, 8, CV_32S);
+  cv::Mat mask = mask_(reach_);
+  const cv::Mat prior = prior_(reach_);
+  const int n = cv::connectedComponents(mask, labels_, 8, CV_32S);
   if (n <= 2) return;  // the background and at most one piece
-  std::vector<double> held(n, 0.0);
+  held_.assign(n, 0.0);
   for (int y = 0; y < labels_.rows; ++y) {
     const int* l = labels_.ptr<int>(y);
-    const float* q = prior_.ptr<float>(y);
-    for (int x = 0; x < labels_.cols; ++x) held[l[x]] += q[x];
+    const float* q = prior.ptr<float>(y);
+    for (int x = 0; x < labels_.cols; ++x) held_[l[x]] += q[x];
   }
-  held[0] = 0;
-  const double least = keep_share * *std::max_element(held.begin(), held.end());
+  held_[0] = 0;
+  const double least = keep_share * *std::max_element(held_.begin(), held_.end());
   for (int y = 0; y < labels_.rows; ++y) {
     const int* l = labels_.ptr<int>(y);
-    std::uint8_t* m = mask_.ptr<std::uint8_t>(y);
+    std::uint8_t* m = mask.ptr<std::uint8_t>(y);
     for (int x = 0; x < labels_.cols; ++x)
-      if (m[x] && !(held[l[x]] > least)) m[x] = 0;
+      if (m[x] && !(held_[l[x]] > least)) m[x] = 0;
   }
 }
 

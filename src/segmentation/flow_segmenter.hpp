@@ -5,11 +5,13 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "motion/dense_flow.hpp"
 #include "motion/motion_evidence.hpp"
 #include "projtrack/flow_model_params.hpp"
 #include "segmentation/colour_mixture.hpp"
+#include "segmentation/log_odds_table.hpp"
 #include "segmentation/work_images.hpp"
 
 namespace projtrack {
@@ -32,8 +34,11 @@ class FlowSegmenter {
   // The prior: the last silhouette carried along the flow, with the remembered one moved by the
   // object's motion; the object's and its surroundings' motions into `split_`.
   void predict(const FlowModelParams& p);
-  // The posterior's log-odds of "object" on this frame, from the prior, colours and motion.
-  void weigh_evidence(const WorkImages& img, double area, const FlowModelParams& p);
+  // Where the prior reaches: its support grown by `blur` (work px), within the frame.
+  cv::Rect reach_of_prior(int blur);
+  // The posterior's log-odds of "object" within reach_, from the prior (blurred `blur` px wide),
+  // colours and motion.
+  void weigh_evidence(const WorkImages& img, int blur, const FlowModelParams& p);
   // Keeps the silhouette as the remembered one when it is about as full as the fullest recent.
   void remember(const FlowModelParams& p);
   // Keeps the pieces of the thresholded posterior that hold enough of the prior.
@@ -48,7 +53,10 @@ class FlowSegmenter {
   cv::Mat moved_;       // a buffer: the memory moved, then weighed
   double fullest_ = 0;  // the fullest recent area, fading
   MotionSplit split_;
-  cv::Mat map_, prior_, log_odds_, inside_, labels_, stats_, centroids_;  // buffers
+  LogOddsTable prior_log_odds_;
+  cv::Rect reach_;  // this frame's prior's reach: the silhouette lies within it
+  cv::Mat map_, prior_, support_, log_odds_, inside_, labels_;  // buffers
+  std::vector<double> held_;                                    // the prior each piece holds
 };
 
 }  // namespace projtrack

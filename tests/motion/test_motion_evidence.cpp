@@ -2,6 +2,7 @@
 // whole number of pixels, and a silhouette carried along a known flow.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 #include "motion/dense_flow.hpp"
@@ -61,6 +62,40 @@ TEST(CarryAlongFlow, MovesTheSilhouetteWhereItsPixelsWent) {
   EXPECT_FLOAT_EQ(cv::sum(prior)[0], 100);
   EXPECT_FLOAT_EQ(prior.at<float>(34, 25), 1);
   EXPECT_FLOAT_EQ(prior.at<float>(30, 20), 0);
+}
+
+TEST(CarryAlongFlow, GivesWhatAWholeFrameRemapGives) {
+  // Only the box the last silhouette can reach is remapped: the prior must be the whole frame's.
+  cv::Mat last = cv::Mat::zeros(120, 160, CV_32F);
+  cv::ellipse(last, {60, 50}, {25, 15}, 30, 0, 360, cv::Scalar(1), cv::FILLED);
+  cv::Mat flow(120, 160, CV_32FC2);
+  cv::RNG rng(7);
+  rng.fill(flow, cv::RNG::UNIFORM, -9, 9);
+  cv::GaussianBlur(flow, flow, {0, 0}, 3.0);
+  cv::Mat whole_map(flow.size(), CV_32FC2), whole;
+  for (int y = 0; y < flow.rows; ++y)
+    for (int x = 0; x < flow.cols; ++x)
+      whole_map.at<cv::Point2f>(y, x) = cv::Point2f(x, y) + flow.at<cv::Point2f>(y, x);
+  cv::remap(last, whole, whole_map, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+  cv::Mat map, prior;
+  carry_along_flow(last, flow, map, prior);
+  EXPECT_GT(cv::sum(prior)[0], 100);
+  EXPECT_EQ(cv::norm(prior, whole, cv::NORM_INF), 0);
+  carry_along_flow(cv::Mat::zeros(120, 160, CV_32F), flow, map, prior);  // nothing to carry
+  EXPECT_EQ(cv::countNonZero(prior), 0);
+}
+
+TEST(SplitMotion, ReadsTheRingAsADilationWouldAtTheFrameEdge) {
+  // An object at the frame's corner: its ring is cut by the frame, not wrapped or mirrored.
+  cv::Mat flow(50, 50, CV_32FC2, cv::Scalar(2, 0));
+  flow(cv::Rect(0, 0, 10, 10)).setTo(cv::Scalar(-3, 1));
+  cv::Mat inside = cv::Mat::zeros(50, 50, CV_8U);
+  inside(cv::Rect(0, 0, 10, 10)).setTo(255);
+  const MotionSplit split = split_motion(flow, inside, 0.5);
+  ASSERT_TRUE(split.valid);
+  EXPECT_FLOAT_EQ(split.object.x, -3);
+  EXPECT_FLOAT_EQ(split.surroundings.x, 2);
+  EXPECT_FLOAT_EQ(split.separation, std::hypot(5.0f, 1.0f));
 }
 
 TEST(MotionEvidence, FavoursPixelsThatMoveWithTheObject) {

@@ -99,6 +99,37 @@ TEST(TrackerSilhouette, NoneBeforeAFrameWithTheEdgesModelOrIntoABadBuffer) {
   EXPECT_EQ(m.area(), 0);
 }
 
+TEST(TrackerSilhouette, EveryFramePixelOfACoarseWorkPixelIsDrawnAsItIs) {
+  // The flow model at 4 frame px a work pixel, on a frame whose width is no multiple of 4, the
+  // disc cut by its right edge: the drawn mask is SilhouetteMask::contains() pixel for pixel.
+  constexpr int kWide = 330;
+  cv::Mat bgr(kH, kWide, CV_8UC3, cv::Scalar(205, 210, 215)), i420,
+      seed = cv::Mat::zeros(kH, kWide, CV_8U);
+  cv::circle(bgr, {310, 120}, 40, cv::Scalar(120, 40, 20), cv::FILLED);
+  cv::circle(seed, {310, 120}, 40, 255, cv::FILLED);
+  cv::cvtColor(bgr, i420, cv::COLOR_BGR2YUV_I420);
+  TrackerParams tp = manual(ObjectModelKind::Flow);
+  tp.flow.work_pixels = kWide * kH / 16.0;
+  Tracker t;
+  ASSERT_TRUE(t.seed_mask(ImageView(seed.data, kWide, kH, kWide)));
+  for (int i = 0; i < 3; ++i) {
+    const TrackResult r = t.track(test::i420_view(i420, kWide, kH), EdgeParams{}, i / 30.0,
+                                  Method::PixelFilling, {}, tp);
+    ASSERT_TRUE(has_features(r.status)) << status_name(r.status) << ": " << r.detail;
+    const SilhouetteMask s = t.silhouette();
+    ASSERT_EQ(s.scale, 4);
+    constexpr int kStride = kWide + 16;
+    std::vector<std::uint8_t> drawn(kStride * kH, 7);
+    ASSERT_TRUE(t.silhouette(drawn.data(), kWide, kH, kStride));
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kWide; ++x)
+        ASSERT_EQ(drawn[y * kStride + x], s.contains({x, y}) ? 255 : 0) << x << "," << y;
+      for (int x = kWide; x < kStride; ++x) ASSERT_EQ(drawn[y * kStride + x], 7);
+    }
+    EXPECT_EQ(drawn[120 * kStride + kWide - 1], 255);  // the disc reaches the right edge
+  }
+}
+
 TEST(TrackerSilhouette, ResetForgetsIt) {
   Tracker t;
   const cv::Mat f = disc_i420(160);
