@@ -18,10 +18,10 @@ constexpr double kContext = 0.5;  // the surroundings read: the box grown by thi
 constexpr double kCollapsed = 0.05;
 
 // GrabCut's object in `box` (ROI coordinates), into `object`; false when it cannot run.
-bool grab_cut(const cv::Mat& bgr, const cv::Rect& box, cv::Mat& object) {
+bool cut_in_box(const cv::Mat& bgr, const cv::Rect& box, cv::Mat& object) {
   if (box.width < 4 || box.height < 4 || box.area() >= bgr.rows * bgr.cols) return false;
   cv::Mat labels;
-  if (!repeatable_grab_cut(bgr, labels, box, kRounds, cv::GC_INIT_WITH_RECT)) return false;
+  if (!grab_cut(bgr, labels, box, kRounds)) return false;
   object = (labels & 1) != 0;
   return true;
 }
@@ -38,7 +38,7 @@ BoxStart object_in_box(const WorkImages& img, const Rect& work_box, cv::Mat& ins
   const cv::Rect roi =
       cv::Rect(box.x - gx, box.y - gy, box.width + 2 * gx, box.height + 2 * gy) & frame;
   cv::Mat object;
-  if (grab_cut(img.bgr(roi), box - roi.tl(), object) &&
+  if (cut_in_box(img.bgr(roi), box - roi.tl(), object) &&
       cv::countNonZero(object) >= kCollapsed * box.area()) {
     object.copyTo(inside(roi));
     return BoxStart::Cut;

@@ -70,24 +70,6 @@ void ColourMixture::add_evidence(const cv::Mat& bgr, double first_share, cv::Mat
   }
 }
 
-double colour_separation(const cv::Mat& bgr, const cv::Mat& a, const cv::Mat& b) {
-  std::vector<double> ha(ColourMixture::kBins, 0.0), hb(ColourMixture::kBins, 0.0);
-  double na = 0, nb = 0;
-  for (int y = 0; y < bgr.rows; ++y) {
-    const cv::Vec3b* p = bgr.ptr<cv::Vec3b>(y);
-    const std::uint8_t* in_a = a.ptr<std::uint8_t>(y);
-    const std::uint8_t* in_b = b.ptr<std::uint8_t>(y);
-    for (int x = 0; x < bgr.cols; ++x) {
-      if (in_a[x]) ha[bin(p[x])] += 1, na += 1;
-      if (in_b[x]) hb[bin(p[x])] += 1, nb += 1;
-    }
-  }
-  if (na == 0 || nb == 0) return 0;
-  double overlap = 0;
-  for (int i = 0; i < ColourMixture::kBins; ++i) overlap += std::sqrt(ha[i] * hb[i] / (na * nb));
-  return std::clamp(1 - overlap, 0.0, 1.0);
-}
-
 void ColourMixture::forget() {
   object_.clear();
   surroundings_.clear();

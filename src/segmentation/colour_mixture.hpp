@@ -33,9 +33,4 @@ class ColourMixture {
   Histogram in_, out_, ratio_;  // one frame's counts; its log-likelihood ratio per colour
 };
 
-// How far the colours where `a` is set stand apart from those where `b` is (CV_8U masks over
-// `bgr`): 1 − the Bhattacharyya coefficient of their 16³ histograms, in [0, 1]; 0 when either
-// is empty.
-double colour_separation(const cv::Mat& bgr, const cv::Mat& a, const cv::Mat& b);
-
 }  // namespace projtrack

@@ -1,10 +1,8 @@
 #include "segmentation/point_start.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "segmentation/colour_mixture.hpp"
 #include "segmentation/grab_cut.hpp"
 
 namespace projtrack {
@@ -12,9 +10,14 @@ namespace projtrack {
 namespace {
 
 constexpr int kRounds = 3;  // GrabCut's iterations, as in the box start
+// The certain disc's radius, a share of the half-side. With only the point's 2 px certain, the
+// cuts collapsed to the point on most of davis-dev (the goat at every size, the dog at all but
+// the largest): the object's mixture was learned from the probable ellipse, mostly background.
+constexpr double kCertain = 0.1;
+constexpr double kCollapsed = 0.02;  // a cut keeping less of its square has collapsed
 
 // GrabCut's labels for the square around `p`: certain background outside it, probable object in
-// the ellipse half its size, certain object at the point.
+// the ellipse half its size, certain object in the disc around the point.
 cv::Mat seed_labels(cv::Size size, cv::Point p, int half) {
   cv::Mat labels(size, CV_8U, cv::Scalar(cv::GC_BGD));
   const cv::Rect square =
@@ -23,22 +26,19 @@ cv::Mat seed_labels(cv::Size size, cv::Point p, int half) {
   cv::Mat core = cv::Mat::zeros(size, CV_8U);
   cv::ellipse(core, p, {std::max(1, half / 2), std::max(1, half / 2)}, 0, 0, 360, 255, cv::FILLED);
   labels.setTo(cv::GC_PR_FGD, core & (labels == cv::GC_PR_BGD));
-  cv::circle(labels, p, 2, cv::GC_FGD, cv::FILLED);
+  const int certain = std::max(2, static_cast<int>(kCertain * half));
+  cv::circle(labels, p, certain, cv::GC_FGD, cv::FILLED);
   return labels;
 }
 
-}  // namespace
-
-double separation_from_ring(const cv::Mat& bgr, const cv::Mat& inside) {
-  const int area = cv::countNonZero(inside);
-  if (area < 16) return -1;
-  const int r = std::max(2, static_cast<int>(0.25 * std::sqrt(static_cast<double>(area))));
-  cv::Mat ring;
-  cv::dilate(inside, ring, cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * r + 1, 2 * r + 1}));
-  ring.setTo(0, inside);
-  if (cv::countNonZero(ring) == 0) return -1;
-  return colour_separation(bgr, inside, ring);
+// Intersection over union of two CV_8U masks.
+double iou(const cv::Mat& a, const cv::Mat& b) {
+  const int both = cv::countNonZero(a & b);
+  const int either = cv::countNonZero(a | b);
+  return either > 0 ? static_cast<double>(both) / either : 0;
 }
+
+}  // namespace
 
 std::vector<cv::Mat> objects_at_point(const WorkImages& img, cv::Point p,
                                       const std::vector<int>& halves) {
@@ -49,20 +49,31 @@ std::vector<cv::Mat> objects_at_point(const WorkImages& img, cv::Point p,
     // GrabCut reads the square and as much around it again: the background it learns from.
     const int reach = 3 * half;
     const cv::Rect roi = cv::Rect(p.x - reach, p.y - reach, 2 * reach + 1, 2 * reach + 1) & frame;
-    cv::Mat sub = labels(roi).clone(), object;
-    if (!repeatable_grab_cut(img.bgr(roi), sub, cv::Rect(), kRounds, cv::GC_INIT_WITH_MASK)) {
-      found.emplace_back();
-      continue;  // one colour around the point: nothing to cut
-    }
-    object = cv::Mat::zeros(img.bgr.size(), CV_8U);
+    cv::Mat sub = labels(roi).clone();
+    found.emplace_back();
+    if (!grab_cut(img.bgr(roi), sub, cv::Rect(), kRounds)) continue;  // one colour: nothing to cut
+    cv::Mat object = cv::Mat::zeros(img.bgr.size(), CV_8U), pieces;
     object(roi).setTo(255, (sub & 1) != 0);
-    cv::Mat pieces;
     cv::connectedComponents(object, pieces, 8, CV_32S);
     const int at = pieces.at<int>(p);
     if (at > 0) object.setTo(0, pieces != at);
-    found.push_back(object);
+    const double square = (2.0 * half + 1) * (2.0 * half + 1);
+    if (at > 0 && cv::countNonZero(object) >= kCollapsed * square) found.back() = object;
   }
   return found;
+}
+
+int most_agreed(const std::vector<cv::Mat>& candidates) {
+  int best = -1;
+  double most = -1;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i].empty()) continue;
+    double agreement = 0;
+    for (std::size_t j = 0; j < candidates.size(); ++j)
+      if (j != i && !candidates[j].empty()) agreement += iou(candidates[i], candidates[j]);
+    if (agreement >= most) most = agreement, best = static_cast<int>(i);
+  }
+  return best;
 }
 
 }  // namespace projtrack

@@ -1,6 +1,7 @@
 // The object at a user's point, for the flow model: GrabCut around the point at a few sizes (the
-// object's size is unknown), each candidate judged by how far its colours stand apart from its
-// ring's; the caller adds its own candidates to the choice.
+// object's size is unknown), and the candidate the others agree with most: the object is what the
+// cuts at most sizes take; a cut too small takes a patch of it, one too large takes background
+// too, each differently.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -10,16 +11,17 @@
 
 namespace projtrack {
 
-// How far the colours inside `inside` (CV_8U) stand apart from those of a ring around it a
-// quarter of √area wide (colour_separation); -1 for a candidate too small to judge (under 16 work
-// px) or with no ring.
-double separation_from_ring(const cv::Mat& bgr, const cv::Mat& inside);
-
-// GrabCut's object around work pixel `p`, in a square of half-side `half` (work px) with the
-// point's close neighbourhood certain and the ellipse half the square's size probable: one
-// candidate per half-side in `halves`, each CV_8U at the work size (empty where GrabCut could not
-// run), the piece holding `p` only.
+// GrabCut's object around work pixel `p`, in a square of half-side `half` (work px) with a disc
+// a tenth of `half` around the point certain and the ellipse half the square's size probable: one
+// candidate per half-side in `halves`, each CV_8U at the work size, the piece holding `p` only;
+// empty where GrabCut could not run or collapsed (kept under 2 % of its square: hardly more than
+// its certain disc).
 std::vector<cv::Mat> objects_at_point(const WorkImages& img, cv::Point p,
                                       const std::vector<int>& halves);
+
+// The index of the candidate (CV_8U masks of one size; empty ones take no part) whose summed
+// intersection over union with the others is the highest, the later on a tie; -1 when all are
+// empty.
+int most_agreed(const std::vector<cv::Mat>& candidates);
 
 }  // namespace projtrack

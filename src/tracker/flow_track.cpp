@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <optional>
+#include <vector>
 
 #include "core/plausibility.hpp"
 #include "core/work_frame.hpp"
@@ -68,23 +69,20 @@ AppearanceStart Tracker::Impl::first_flow_silhouette(const ColorView& frame, Edg
 void Tracker::Impl::choose_at_point(Point2i point, AppearanceStart& start) {
   // The appearance model's region is one colour region (a patch of a cow, nothing of a camel of
   // the sand's colour): GrabCut around the point at a tenth to two fifths of the frame's height
-  // competes with it, the candidate whose colours stand farthest apart from its ring's winning.
+  // joins it as candidates, and the one the others agree with most is taken.
   const WorkImages& img = work.images;
   const cv::Point p(std::clamp(point.x / img.scale, 0, img.bgr.cols - 1),
                     std::clamp(point.y / img.scale, 0, img.bgr.rows - 1));
   const int h = img.bgr.rows;
-  double best = start.found ? separation_from_ring(img.bgr, work.inside) : -1;
-  for (cv::Mat& candidate : objects_at_point(img, p, {h / 10, h / 5, 3 * h / 10, 2 * h / 5})) {
-    if (candidate.empty()) continue;
-    const double s = separation_from_ring(img.bgr, candidate);
-    if (s > best) {
-      best = s;
-      cv::swap(work.inside, candidate);
-      start.found = true;
-      start.resumed = false;
-      start.why.clear();
-    }
-  }
+  std::vector<cv::Mat> candidates =
+      objects_at_point(img, p, {h / 10, h / 5, 3 * h / 10, 2 * h / 5});
+  if (start.found) candidates.insert(candidates.begin(), work.inside);
+  const int chosen = most_agreed(candidates);
+  if (chosen < 0 || (start.found && chosen == 0)) return;
+  cv::swap(work.inside, candidates[chosen]);
+  start.found = true;
+  start.resumed = false;
+  start.why.clear();
 }
 
 Features Tracker::Impl::estimate_flow_silhouette(const ColorView& frame, const FrameInput& in) {

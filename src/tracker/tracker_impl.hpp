@@ -73,8 +73,8 @@ struct Tracker::Impl {
   AppearanceStart first_flow_silhouette(const ColorView& frame, EdgeSource& edges,
                                         const FrameInput& in);
   // A point start of the flow model: GrabCut's candidates around the point against the
-  // appearance model's first silhouette (work.inside, when `start` found it); the best into
-  // work.inside.
+  // appearance model's first silhouette (work.inside, when `start` found it); the one the others
+  // agree with most into work.inside.
   void choose_at_point(Point2i point, AppearanceStart& start);
   // The flow model's silhouette as the estimator reads it (work.silhouette), and its estimate.
   Features estimate_flow_silhouette(const ColorView& frame, const FrameInput& in);

@@ -1,0 +1,58 @@
+// What the flow model's starts share: a GrabCut that gives the same cut whatever ran before it,
+// and the choice among cuts at several sizes of the one the others agree with.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "segmentation/grab_cut.hpp"
+#include "segmentation/point_start.hpp"
+
+namespace projtrack {
+namespace {
+
+// A noisy frame with a noisy disc of other colours. (GrabCut's mixtures' k-means starts from
+// random centres, but a scene this plain is cut the same from any; on davis-dev's libby the box's
+// cut varied with the generator's state.)
+cv::Mat noisy_disc() {
+  cv::Mat bgr(120, 160, CV_8UC3);
+  cv::RNG rng(3);
+  rng.fill(bgr, cv::RNG::UNIFORM, 40, 140);
+  cv::Mat disc(bgr.size(), CV_8UC3);
+  rng.fill(disc, cv::RNG::UNIFORM, 100, 220);
+  cv::Mat where = cv::Mat::zeros(bgr.size(), CV_8U);
+  cv::circle(where, {80, 60}, 30, 255, cv::FILLED);
+  disc.copyTo(bgr, where);
+  return bgr;
+}
+
+TEST(GrabCut, TheSameCutWhateverRanBefore) {
+  const cv::Mat bgr = noisy_disc();
+  const cv::Rect box(45, 25, 70, 70);
+  cv::Mat first, second;
+  cv::theRNG() = cv::RNG(1);
+  ASSERT_TRUE(grab_cut(bgr, first, box, 3));
+  cv::theRNG() = cv::RNG(12345);  // another state of the thread's generator
+  const std::uint64_t state = cv::theRNG().state;
+  ASSERT_TRUE(grab_cut(bgr, second, box, 3));
+  EXPECT_EQ(cv::countNonZero(first != second), 0);
+  EXPECT_EQ(cv::theRNG().state, state);  // the thread's generator is given back untouched
+}
+
+cv::Mat square(int x, int side) {
+  cv::Mat m = cv::Mat::zeros(100, 100, CV_8U);
+  m(cv::Rect(x, 20, side, side)).setTo(255);
+  return m;
+}
+
+TEST(MostAgreed, TheCandidateTheOthersOverlapMost) {
+  // Two cuts of nearly one object and one elsewhere: one of the two; the empty one takes no part.
+  EXPECT_EQ(most_agreed({square(60, 30), square(10, 30), cv::Mat(), square(12, 30)}), 3);
+  EXPECT_EQ(most_agreed({square(10, 30), square(60, 30), square(12, 30)}), 2);
+  // A tie goes to the later (larger) candidate; nothing to choose from: -1.
+  EXPECT_EQ(most_agreed({square(10, 30), square(10, 30)}), 1);
+  EXPECT_EQ(most_agreed({square(10, 30)}), 0);
+  EXPECT_EQ(most_agreed({cv::Mat(), cv::Mat()}), -1);
+}
+
+}  // namespace
+}  // namespace projtrack
