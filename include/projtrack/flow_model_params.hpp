@@ -21,6 +21,10 @@ struct FlowModelParams {
   // first frame's colours in the evidence (they anchor it against drift).
   double learning_rate = 0.05;
   double first_share = 0.5;
+  // The followed surroundings' colours are those of a ring this share of √area wide around the
+  // silhouette (the first frame's are the whole rest of the frame): what the object must be told
+  // from is what lies next to it.
+  double colour_ring = 0.25;
   // Motion evidence: the surroundings' motion is read in a ring this share of √area wide; a
   // pixel's evidence is at most this many nats either way; none when the object and its
   // surroundings move less than `min_separation` work px a frame apart.

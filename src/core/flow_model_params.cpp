@@ -27,6 +27,7 @@ std::string validate(const FlowModelParams& p) {
       outside("prior_floor", p.prior_floor, 0, 0.499, true),
       outside("learning_rate", p.learning_rate, 0, 1),
       outside("first_share", p.first_share, 0, 1),
+      outside("colour_ring", p.colour_ring, 0, 10, true),
       outside("motion_ring", p.motion_ring, 0, 10, true),
       outside("motion_weight", p.motion_weight, 0, 50),
       outside("min_separation", p.min_separation, 0, 1e6),

@@ -24,28 +24,35 @@ void normalise(std::vector<float>& h) {
 
 }  // namespace
 
-void ColourMixture::count(const cv::Mat& bgr, const cv::Mat& inside, Histogram& in,
-                          Histogram& out) const {
+void ColourMixture::count(const cv::Mat& bgr, const cv::Mat& inside, const cv::Mat& around,
+                          Histogram& in, Histogram& out) const {
   in.assign(kBins, kPrior);
   out.assign(kBins, kPrior);
   for (int y = 0; y < bgr.rows; ++y) {
     const cv::Vec3b* p = bgr.ptr<cv::Vec3b>(y);
     const std::uint8_t* m = inside.ptr<std::uint8_t>(y);
-    for (int x = 0; x < bgr.cols; ++x) (m[x] ? in : out)[bin(p[x])] += 1;
+    const std::uint8_t* a = around.empty() ? nullptr : around.ptr<std::uint8_t>(y);
+    for (int x = 0; x < bgr.cols; ++x) {
+      if (m[x])
+        in[bin(p[x])] += 1;
+      else if (a == nullptr || a[x])
+        out[bin(p[x])] += 1;
+    }
   }
   normalise(in);
   normalise(out);
 }
 
 void ColourMixture::start(const cv::Mat& bgr, const cv::Mat& inside) {
-  count(bgr, inside, object_, surroundings_);
+  count(bgr, inside, cv::Mat(), object_, surroundings_);
   first_object_ = object_;
   first_surroundings_ = surroundings_;
 }
 
-void ColourMixture::learn(const cv::Mat& bgr, const cv::Mat& inside, double rate) {
+void ColourMixture::learn(const cv::Mat& bgr, const cv::Mat& inside, const cv::Mat& around,
+                          double rate) {
   if (!learned() || cv::countNonZero(inside) == 0) return;
-  count(bgr, inside, in_, out_);
+  count(bgr, inside, around, in_, out_);
   const auto r = static_cast<float>(rate);
   for (int i = 0; i < kBins; ++i) {
     object_[i] += r * (in_[i] - object_[i]);

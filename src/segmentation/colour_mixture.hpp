@@ -17,8 +17,9 @@ class ColourMixture {
   // Learns both models from `bgr` (CV_8UC3): the object where `inside` (CV_8U) is set, its
   // surroundings elsewhere. The first models are kept: they anchor later ones against drift.
   void start(const cv::Mat& bgr, const cv::Mat& inside);
-  // Follows the colours of this frame's silhouette at `rate` (the share of one frame).
-  void learn(const cv::Mat& bgr, const cv::Mat& inside, double rate);
+  // Follows the colours at `rate` (the share of one frame): the object's where `inside` is set,
+  // its surroundings' where only `around` is (CV_8U masks over `bgr`).
+  void learn(const cv::Mat& bgr, const cv::Mat& inside, const cv::Mat& around, double rate);
   // Adds each pixel's log-likelihood ratio of object against surroundings to `log_odds`
   // (CV_32F): the mean of the first and the followed models, each `first_share` and the rest.
   void add_evidence(const cv::Mat& bgr, double first_share, cv::Mat& log_odds);
@@ -27,7 +28,10 @@ class ColourMixture {
 
  private:
   using Histogram = std::vector<float>;
-  void count(const cv::Mat& bgr, const cv::Mat& inside, Histogram& in, Histogram& out) const;
+  // The colours where `inside` is set into `in`, the others' where `around` is (everywhere when
+  // it is empty) into `out`, both normalised.
+  void count(const cv::Mat& bgr, const cv::Mat& inside, const cv::Mat& around, Histogram& in,
+             Histogram& out) const;
 
   Histogram object_, surroundings_, first_object_, first_surroundings_;
   Histogram in_, out_, ratio_;  // one frame's counts; its log-likelihood ratio per colour

@@ -50,7 +50,7 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
     forget(false);
     return false;
   }
-  colours_.learn(img.bgr, mask_, p.learning_rate);
+  learn_colours(img, p);
   mask_.convertTo(last_, CV_32F, 1.0 / 255);
   remember(p);
   return true;
@@ -84,6 +84,20 @@ void FlowSegmenter::predict(const FlowModelParams& p) {
     const float* m = memory_.ptr<float>(y);
     for (int x = to.x; x < to.x + to.width; ++x) q[x] = std::max(q[x], weight * m[x]);
   }
+}
+
+void FlowSegmenter::learn_colours(const WorkImages& img, const FlowModelParams& p) {
+  // The surroundings are the silhouette's square ring (a box sum, as the motion's ring) within its
+  // box grown by the ring's width.
+  const double area = cv::countNonZero(mask_);
+  const int r = std::max(1, static_cast<int>(p.colour_ring * std::sqrt(area)));
+  const cv::Rect box = cv::boundingRect(mask_);
+  const cv::Rect near = cv::Rect(box.x - r, box.y - r, box.width + 2 * r, box.height + 2 * r) &
+                        cv::Rect(0, 0, mask_.cols, mask_.rows);
+  cv::boxFilter(mask_(near), ring_count_, CV_32S, {2 * r + 1, 2 * r + 1}, {-1, -1}, false,
+                cv::BORDER_CONSTANT | cv::BORDER_ISOLATED);
+  cv::compare(ring_count_, 0, around_, cv::CMP_GT);
+  colours_.learn(img.bgr(near), mask_(near), around_, p.learning_rate);
 }
 
 void FlowSegmenter::remember(const FlowModelParams& p) {

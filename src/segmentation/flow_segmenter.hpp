@@ -39,6 +39,8 @@ class FlowSegmenter {
   // The posterior's log-odds of "object" within reach_, from the prior (blurred `blur` px wide),
   // colours and motion.
   void weigh_evidence(const WorkImages& img, int blur, const FlowModelParams& p);
+  // Follows the colours of the silhouette and of a ring around it.
+  void learn_colours(const WorkImages& img, const FlowModelParams& p);
   // Keeps the silhouette as the remembered one when it is about as full as the fullest recent.
   void remember(const FlowModelParams& p);
   // Keeps the pieces of the thresholded posterior that hold enough of the prior.
@@ -55,8 +57,8 @@ class FlowSegmenter {
   MotionSplit split_;
   LogOddsTable prior_log_odds_;
   cv::Rect reach_;  // this frame's prior's reach: the silhouette lies within it
-  cv::Mat map_, prior_, support_, log_odds_, inside_, labels_;  // buffers
-  std::vector<double> held_;                                    // the prior each piece holds
+  cv::Mat map_, prior_, support_, log_odds_, inside_, labels_, ring_count_, around_;  // buffers
+  std::vector<double> held_;  // the prior each piece holds
 };
 
 }  // namespace projtrack

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "projtrack/estimator.hpp"
+#include "projtrack/flow_model_params.hpp"
 #include "projtrack/method.hpp"
 #include "projtrack/params.hpp"
 #include "projtrack/status.hpp"
@@ -136,6 +137,34 @@ TEST(Status, AReportedEstimateKeepsItsNameAndItsFeatures) {
     }
     EXPECT_EQ(status_name(t), status_name(s));
     EXPECT_EQ(has_features(t), has_features(s)) << status_name(s);
+  }
+}
+
+TEST(FlowModelParams, EveryMemberOutOfItsRangeIsNamed) {
+  EXPECT_EQ(validate(FlowModelParams{}), "");
+  struct Case {
+    const char* name;
+    double FlowModelParams::*member;
+    double bad;
+  };
+  const Case cases[] = {{"work_pixels", &FlowModelParams::work_pixels, 999},
+                        {"prior_spread", &FlowModelParams::prior_spread, -0.1},
+                        {"prior_floor", &FlowModelParams::prior_floor, 0.5},
+                        {"learning_rate", &FlowModelParams::learning_rate, 1.5},
+                        {"first_share", &FlowModelParams::first_share, -1},
+                        {"colour_ring", &FlowModelParams::colour_ring, 0},
+                        {"motion_ring", &FlowModelParams::motion_ring, NAN},
+                        {"motion_weight", &FlowModelParams::motion_weight, -2},
+                        {"min_separation", &FlowModelParams::min_separation, INFINITY},
+                        {"memory_weight", &FlowModelParams::memory_weight, 2},
+                        {"memory_refresh", &FlowModelParams::memory_refresh, -0.5},
+                        {"memory_fade", &FlowModelParams::memory_fade, 1},
+                        {"keep_share", &FlowModelParams::keep_share, 1.01}};
+  for (const Case& c : cases) {
+    FlowModelParams p;
+    p.*c.member = c.bad;
+    EXPECT_NE(validate(p).find(std::string("flow.") + c.name), std::string::npos)
+        << c.name << " = " << c.bad << ": " << validate(p);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "segmentation/box_start.hpp"
+#include "segmentation/colour_mixture.hpp"
 #include "segmentation/flow_segmenter.hpp"
 #include "segmentation/point_start.hpp"
 
@@ -141,6 +142,27 @@ TEST(ObjectInBox, GrabCutTakesTheObjectNotTheBox) {
   // A box too small to cut: the ellipse inscribed in it, said by the result.
   EXPECT_EQ(object_in_box(images_of(bgr), {10, 10, 3, 3}, inside), BoxStart::Ellipse);
   EXPECT_GT(cv::countNonZero(inside), 0);
+}
+
+TEST(ColourMixture, FollowsTheSurroundingsOnlyWhereTheRingIs) {
+  // Red object, a green ring around it, blue far away: followed with the ring alone as the
+  // surroundings, green is what the object is told from and blue, never seen near it, says
+  // little either way.
+  cv::Mat bgr(60, 90, CV_8UC3, cv::Scalar(255, 0, 0));
+  cv::Mat inside = cv::Mat::zeros(bgr.size(), CV_8U), around = cv::Mat::zeros(bgr.size(), CV_8U);
+  bgr(cv::Rect(0, 0, 40, 60)).setTo(cv::Scalar(0, 255, 0));
+  bgr(cv::Rect(10, 20, 20, 20)).setTo(cv::Scalar(0, 0, 255));
+  inside(cv::Rect(10, 20, 20, 20)).setTo(255);
+  around(cv::Rect(0, 10, 40, 40)).setTo(255);
+  ColourMixture colours;
+  colours.start(bgr, inside);
+  colours.learn(bgr, inside, around, 1.0);
+  cv::Mat odds = cv::Mat::zeros(bgr.size(), CV_32F);
+  colours.add_evidence(bgr, 0.0, odds);              // the followed models alone
+  EXPECT_GT(odds.at<float>(30, 20), 5);              // red: the object
+  EXPECT_LT(odds.at<float>(5, 5), -5);               // green: its surroundings
+  EXPECT_LT(std::abs(odds.at<float>(30, 70)), 1.0);  // blue: not near it
+  EXPECT_LT(odds.at<float>(5, 5), odds.at<float>(30, 70) - 5);
 }
 
 // Discs of many colours on a blurred noise: a picture whose colour mixtures k-means can seed in
