@@ -15,8 +15,6 @@ namespace projtrack::gst {
 
 namespace {
 
-constexpr double kMaxGradientThreshold = 10000.0;
-
 GParamSpec* specs[N_PROPERTIES];
 
 // A property's blurb: `what` it does, after the methods it tunes (those of the table of methods

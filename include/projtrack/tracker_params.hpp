@@ -104,6 +104,18 @@ struct TrackerParams {
   GestureParams push;  // push, press and release from depth (the element's push-threshold)
 };
 
+// The ranges of the settings whose limits are no other constant's: the element's property specs
+// and validate(Settings) (Python's keywords) both read them, so both refuse the same values.
+struct SettingRange {
+  double low, high;
+  bool contains(double v) const { return v >= low && v <= high; }  // false for NaN
+};
+inline constexpr SettingRange kLeakFactorRange{1.05, 1000.0};
+inline constexpr SettingRange kSmoothingMinCutoffRange{0.01, 100.0};  // Hz
+inline constexpr SettingRange kSmoothingBetaRange{0.0, 1000.0};
+inline constexpr SettingRange kPushThresholdRange{0.01, 10.0};
+inline constexpr SettingRange kEdgeThresholdRange{0.0, 10000.0};  // gradient magnitude
+
 // The least budget a frame gets, work units: a tiny frame can still afford the default rays.
 inline constexpr std::uint64_t kLeastFrameWork = 1 << 18;
 inline constexpr double kMaxMaxWork = 1e6;

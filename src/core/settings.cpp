@@ -5,6 +5,19 @@
 
 namespace projtrack {
 
+namespace {
+
+// "name = value is outside [low, high]" when `v` is not a number in `range`.
+std::string outside(const char* name, double v, SettingRange range) {
+  if (range.contains(v)) return {};
+  char why[160];
+  std::snprintf(why, sizeof why, "%s = %.15g is outside [%.15g, %.15g]", name, v, range.low,
+                range.high);
+  return why;
+}
+
+}  // namespace
+
 std::string validate(const TrackerParams& tp) {
   if (!(tp.max_work >= 0 && tp.max_work <= kMaxMaxWork)) {
     char why[120];
@@ -18,24 +31,24 @@ std::string validate(const TrackerParams& tp) {
 std::string validate(const Settings& s) {
   if (!is_method(s.method))
     return "method " + std::to_string(static_cast<int>(s.method)) + " is no method";
-  if (std::string why = validate(s.params); !why.empty()) return why;
-  if (std::string why = validate(s.edges); !why.empty()) return why;
-  // EdgeMap clamps these; a user who gives them means something we do not do.
-  if (!(s.edges.low >= 0) || !(s.edges.high >= 0))
-    return "edge_threshold_low and edge_threshold_high must be at least 0";
   if (s.edges.blur < 0 || s.edges.blur > kMaxBlurPasses)
     return "blur = " + std::to_string(s.edges.blur) + " is outside [0, " +
            std::to_string(kMaxBlurPasses) + "]";
-  // What the element's property ranges keep in range, and Python's keywords do not.
+  // The ranges the element's property specs keep values in, checked here for Python's keywords
+  // and the library's callers.
   const TrackerParams& tp = s.tracker;
-  if (!(tp.leak_factor > 1 && std::isfinite(tp.leak_factor)))
-    return "leak_factor = " + std::to_string(tp.leak_factor) + " must be a number above 1";
-  if (!(tp.filter.min_cutoff > 0 && std::isfinite(tp.filter.min_cutoff)))
-    return "smoothing_min_cutoff must be a positive number (Hz)";
-  if (!(tp.filter.beta >= 0 && std::isfinite(tp.filter.beta)))
-    return "smoothing_beta must be a number of at least 0";
-  if (!(tp.push.threshold > 0 && std::isfinite(tp.push.threshold)))
-    return "push_threshold must be a positive number";
+  const std::string checks[] = {
+      outside("edge_threshold_low", s.edges.low, kEdgeThresholdRange),
+      outside("edge_threshold_high", s.edges.high, kEdgeThresholdRange),
+      outside("leak_factor", tp.leak_factor, kLeakFactorRange),
+      outside("smoothing_min_cutoff", tp.filter.min_cutoff, kSmoothingMinCutoffRange),
+      outside("smoothing_beta", tp.filter.beta, kSmoothingBetaRange),
+      outside("push_threshold", tp.push.threshold, kPushThresholdRange),
+  };
+  for (const std::string& why : checks)
+    if (!why.empty()) return why;
+  if (std::string why = validate(s.params); !why.empty()) return why;
+  if (std::string why = validate(s.edges); !why.empty()) return why;
   return validate(tp);
 }
 
