@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_color.hpp"
 #include "gstprojtrack.h"
 #include "projtrack/tracker.hpp"
 #include "settings.hpp"
@@ -26,7 +27,7 @@ namespace projtrack::gst {
 struct Stream {
   Tracker tracker;
   Trace trace;
-  std::vector<std::uint8_t> converted;  // packed RGB frames converted to luma and chroma
+  FrameBuffers converted;  // frames converted to the tracker's luma and chroma (frame_color)
   // Why buffers were not read since the caps: each reason is warned once.
   std::set<std::string> layout_warnings;
   int width = 0, height = 0;
@@ -37,7 +38,6 @@ struct Stream {
   int track_id = 0;          // of the current track (next_track_id()); 0 before the first
   std::string element_name;  // for the metas
   std::vector<std::vector<Point2i>> outline;  // this frame's silhouette, frame coordinates
-  int black_level = 0;                        // of edge-detector=input: 16 in limited-range YUV
   guint64 frames = 0;                         // for buffers without timestamps
   TrackStatus last_status = TrackStatus::NoInnerPoint;
   // The status of the last message posted (updates=on-change).

@@ -42,9 +42,9 @@ ChromaView chroma_in_place(const GstVideoFrame* frame) {
   return c;
 }
 
-}  // namespace
-
-ColorView frame_color(const GstVideoFrame* frame, std::vector<std::uint8_t>& buffer) {
+// The frame's luma and chroma as its buffer stores them (in place where the library can read
+// them), RGB converted.
+ColorView as_stored(const GstVideoFrame* frame, std::vector<std::uint8_t>& buffer) {
   const int width = GST_VIDEO_FRAME_WIDTH(frame), height = GST_VIDEO_FRAME_HEIGHT(frame);
   if (has_luma_plane(GST_VIDEO_FRAME_FORMAT(frame))) {
     const auto* luma = static_cast<const std::uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame, 0));
@@ -99,6 +99,24 @@ ColorView frame_color(const GstVideoFrame* frame, std::vector<std::uint8_t>& buf
   const int pstride = GST_VIDEO_FRAME_COMP_PSTRIDE(frame, 0);
   const std::ptrdiff_t stride = GST_VIDEO_FRAME_COMP_STRIDE(frame, 0);
   return packed_rgb_to_color(comp(0), comp(1), comp(2), pstride, stride, width, height, buffer);
+}
+
+// Whether the frame stores full-range values: its caps' colorimetry says so, or says nothing for
+// gray (GStreamer's default: GRAY8 full range, YUV limited; videoconvert maps I420's 16-235 luma
+// to GRAY8's 0-255). RGB is converted to video range by the library itself.
+bool full_range(const GstVideoFrame* frame) {
+  const GstVideoInfo* info = &frame->info;
+  if (GST_VIDEO_INFO_IS_RGB(info)) return false;
+  const GstVideoColorRange range = info->colorimetry.range;
+  return range == GST_VIDEO_COLOR_RANGE_0_255 ||
+         (range == GST_VIDEO_COLOR_RANGE_UNKNOWN && GST_VIDEO_INFO_IS_GRAY(info));
+}
+
+}  // namespace
+
+ColorView frame_color(const GstVideoFrame* frame, FrameBuffers& buffers) {
+  const ColorView stored = as_stored(frame, buffers.read);
+  return full_range(frame) ? full_to_video_range(stored, buffers.video_range) : stored;
 }
 
 }  // namespace projtrack::gst

@@ -106,9 +106,9 @@ class Painter {
   // Component values of an RGB colour in this frame's colour space (BT.601, as the gray).
   void components(Rgb c, std::uint8_t out[4]) const {
     if (GST_VIDEO_FORMAT_INFO_IS_YUV(info_)) {
-      out[0] = static_cast<std::uint8_t>(16 + (66 * c.r + 129 * c.g + 25 * c.b + 128) / 256);
-      out[1] = static_cast<std::uint8_t>(128 + (-38 * c.r - 74 * c.g + 112 * c.b + 128) / 256);
-      out[2] = static_cast<std::uint8_t>(128 + (112 * c.r - 94 * c.g - 18 * c.b + 128) / 256);
+      out[0] = luma_of(c.r, c.g, c.b);  // video range, as the library reads RGB
+      out[1] = u_of(c.r, c.g, c.b);
+      out[2] = v_of(c.r, c.g, c.b);
     } else if (GST_VIDEO_FORMAT_INFO_IS_GRAY(info_)) {
       out[0] = gray_of(c.r, c.g, c.b);
     } else {

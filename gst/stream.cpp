@@ -30,7 +30,8 @@ TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const ElementSetti
   Stream& st = *self->state->stream;
   note = apply_seed(st.tracker, command, s, st.width, st.height);
   Settings bundle = s;  // the library's part of the element's settings
-  bundle.edges.input_black_level = st.black_level;
+  // frame_color() gives every frame at video range: an edge map's black is 16 there.
+  bundle.edges.input_black_level = kVideoBlack;
   const ColorView color = frame_color(frame, st.converted);
   // What the method did is recorded only when it is drawn (rays may number 131 072).
   const bool traced = s.draw && (s.draw_flags & (kDrawGrid | kDrawOutline));
@@ -109,8 +110,6 @@ gboolean set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info, GstCa
   Stream& st = *self->state->stream;
   const int width = GST_VIDEO_INFO_WIDTH(in_info), height = GST_VIDEO_INFO_HEIGHT(in_info);
   const GstVideoColorimetry& colours = in_info->colorimetry;
-  st.black_level =
-      GST_VIDEO_INFO_IS_YUV(in_info) && colours.range == GST_VIDEO_COLOR_RANGE_16_235 ? 16 : 0;
   st.layout_warnings.clear();
   const bool resized = !first && (width != st.width || height != st.height);
   const bool recoloured = !first && (GST_VIDEO_INFO_FORMAT(in_info) != st.format ||

@@ -61,10 +61,11 @@ ColorView FrameReader::read(const py::handle& obj) {
   const std::ptrdiff_t stride = s.height == 1 ? s.width * s.channels : a.strides(0);
   ColorView c;
   if (s.channels == 1) {
+    // Gray as OpenCV gives it, full range: mapped to video range, as the element's GRAY8.
     c.luma = ImageView(data, s.width, s.height, stride);
-    return c;
+    return full_to_video_range(c, planes_);
   }
-  // BGR: the library's packed-RGB conversion, as the element's for BGR and BGRx caps.
+  // BGR: the library's packed-RGB conversion (video range), as the element's for BGR and BGRx.
   return packed_rgb_to_color(data + 2, data + 1, data, s.channels, stride, s.width, s.height,
                              planes_);
 }

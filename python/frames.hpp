@@ -1,7 +1,8 @@
 // numpy frames as the library's ColorView: gray (H×W or H×W×1) or BGR / BGRA (H×W×3 or H×W×4)
-// uint8, of any strides. Gray rows are read in place when their pixels are adjacent; colour is
-// converted once to luma and chroma planes by the library's own conversion (the element's, for
-// packed RGB), reading any row stride, and an array of another layout is copied first.
+// uint8, of any strides, read at the tracker's video range as the element reads GRAY8 and BGR:
+// gray mapped from full range, colour converted to luma and chroma planes, both by the library's
+// own conversions (the element's), reading any row stride; an array of another layout is copied
+// first.
 #pragma once
 
 #include <pybind11/numpy.h>
@@ -27,7 +28,7 @@ class FrameReader {
 
  private:
   pybind11::array held_;              // the array read in place, kept alive while it is read
-  std::vector<std::uint8_t> planes_;  // BGR's luma, then its U and V planes
+  std::vector<std::uint8_t> planes_;  // the luma, then BGR's U and V planes
   int channels_ = 0;
 };
 

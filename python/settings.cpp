@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "projtrack/color_view.hpp"
 #include "projtrack/names.hpp"
 
 namespace projtrack::python {
@@ -17,6 +18,8 @@ namespace py = pybind11;
 Settings python_defaults() {
   Settings s;
   s.tracker.acquisition = Acquisition::Manual;
+  // FrameReader gives the tracker every frame at video range: an edge map's black is 16 there.
+  s.edges.input_black_level = kVideoBlack;
   return s;
 }
 

@@ -122,26 +122,62 @@ void average_luma(const ImageView& frame, const Rect& rect, int s,
   }
 }
 
-// The work pixels' chroma in `rect`: each block's centre sample.
-void sample_chroma(const ColorView& frame, const Rect& rect, int s,
-                   std::vector<std::ptrdiff_t>& offsets, std::uint8_t* u, std::uint8_t* v) {
+// The chroma samples that cover frame pixels [f0, f1) of an axis subsampled by `shift`, and how
+// many of those pixels each covers.
+ChromaSpan samples_of(int f0, int f1, int shift) {
+  ChromaSpan span;
+  span.first = f0 >> shift;
+  span.count = ((f1 - 1) >> shift) - span.first + 1;
+  span.pixels = f1 - f0;
+  span.inner = 1 << shift;
+  span.first_weight = std::min(f1, (span.first + 1) << shift) - f0;
+  span.last_weight = span.count == 1 ? span.first_weight : f1 - ((f1 - 1) >> shift << shift);
+  return span;
+}
+
+int weight(const ChromaSpan& span, int k) {
+  return k == 0 ? span.first_weight : k == span.count - 1 ? span.last_weight : span.inner;
+}
+
+// The work pixels' chroma in `rect`: each the mean over its block's pixels of the chroma sample
+// that covers each, whatever the layout stores them at (I420's one per 2×2 pixels, YUY2's one per
+// 2×1, Y444's and RGB's every pixel), so that every layout gives a block the same colour. A
+// block's centre sample would read a YUY2 frame's chroma at other places than an I420 frame's,
+// and full-resolution chroma (an RGB frame's) at one pixel where I420 has the mean of four; the
+// samples' plain mean would weigh a sample half in an odd-sized block as much as one inside it.
+void average_chroma(const ColorView& frame, const Rect& rect, int s, std::vector<ChromaSpan>& cols,
+                    std::uint8_t* u, std::uint8_t* v) {
   const int w = rect.width, h = rect.height;
   const int fw = frame.luma.width, fh = frame.luma.height;
-  // The chroma offsets of a row's blocks are the same on every row.
   const ChromaView& c = frame.chroma;
-  offsets.resize(static_cast<std::size_t>(w));
+  // The chroma columns of a row's blocks are the same on every row.
+  cols.resize(static_cast<std::size_t>(w));
   for (int x = 0; x < w; ++x) {
-    const int cx = std::min(fw - 1, (rect.x + x) * s + s / 2);
-    offsets[x] = static_cast<std::ptrdiff_t>(cx >> c.shift_x) * c.pixel_stride;
+    const int fx0 = (rect.x + x) * s;
+    cols[x] = samples_of(fx0, std::min(fw, fx0 + s), c.shift_x);
   }
   for (int y = 0; y < h; ++y) {
-    const int cy = std::min(fh - 1, (rect.y + y) * s + s / 2);
-    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(cy >> c.shift_y) * c.stride;
+    const int fy0 = (rect.y + y) * s;
+    const ChromaSpan rows = samples_of(fy0, std::min(fh, fy0 + s), c.shift_y);
     std::uint8_t* uo = u + static_cast<std::size_t>(y) * w;
     std::uint8_t* vo = v + static_cast<std::size_t>(y) * w;
     for (int x = 0; x < w; ++x) {
-      uo[x] = c.u[row + offsets[x]];
-      vo[x] = c.v[row + offsets[x]];
+      const ChromaSpan& col = cols[x];
+      std::uint32_t su = 0, sv = 0;
+      for (int r = 0; r < rows.count; ++r) {
+        std::ptrdiff_t i = static_cast<std::ptrdiff_t>(rows.first + r) * c.stride +
+                           static_cast<std::ptrdiff_t>(col.first) * c.pixel_stride;
+        std::uint32_t ru = 0, rv = 0;
+        for (int k = 0; k < col.count; ++k, i += c.pixel_stride) {
+          ru += static_cast<std::uint32_t>(weight(col, k)) * c.u[i];
+          rv += static_cast<std::uint32_t>(weight(col, k)) * c.v[i];
+        }
+        su += static_cast<std::uint32_t>(weight(rows, r)) * ru;
+        sv += static_cast<std::uint32_t>(weight(rows, r)) * rv;
+      }
+      const std::uint32_t n = static_cast<std::uint32_t>(rows.pixels * col.pixels);
+      uo[x] = static_cast<std::uint8_t>((su + n / 2) / n);
+      vo[x] = static_cast<std::uint8_t>((sv + n / 2) / n);
     }
   }
 }
@@ -194,7 +230,7 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
   if (!chroma) return;
   std::uint8_t* u = luma + n;
   std::uint8_t* v = u + n;
-  sample_chroma(frame, rect_, s, offsets_, u, v);
+  average_chroma(frame, rect_, s, spans_, u, v);
   if (!e.identity()) apply_table(chroma_lut_, u, 2 * n);  // u, then v just after
   view_.chroma = {u, v, w, 1, 0, 0};
 }

@@ -12,11 +12,19 @@
 
 namespace projtrack {
 
+// The chroma samples [first, first + count) along one axis that cover a block of `pixels`
+// frame pixels: the first and last cover `first_weight` and `last_weight` of them, the others
+// `inner` each.
+struct ChromaSpan {
+  int first = 0, count = 0, pixels = 0, inner = 1, first_weight = 0, last_weight = 0;
+};
+
 // Work coordinates: work pixel (X, Y) at scale s covers frame pixels [sX, sX + s) × [sY, sY + s).
 class WorkFrame {
  public:
   // The work pixels of `region` (work coordinates, clipped to the frame): each luma the mean of
-  // its block, each chroma the block's centre sample, both read with the frame's exposure. The
+  // its block, each chroma the mean over its block's pixels of the chroma sample covering
+  // each, both read with the frame's exposure. The
   // view's exposure is the identity.
   void build(const ColorView& frame, int scale, const Rect& region);
   // The region's pixels: view() pixel (x, y) is work pixel (x + rect().x, y + rect().y).
@@ -26,9 +34,9 @@ class WorkFrame {
 
  private:
   std::vector<std::uint8_t> planes_;
-  std::vector<std::uint32_t> sums_;      // per block of a row
-  std::vector<std::uint16_t> columns_;   // per frame column of a block row: its s pixels' sum
-  std::vector<std::ptrdiff_t> offsets_;  // chroma offset of each block of a row
+  std::vector<std::uint32_t> sums_;     // per block of a row
+  std::vector<std::uint16_t> columns_;  // per frame column of a block row: its s pixels' sum
+  std::vector<ChromaSpan> spans_;       // chroma columns of each block of a row
   std::array<std::uint8_t, 256> luma_lut_{}, chroma_lut_{};  // the frame's exposure
   ColorView view_;
   Rect rect_;

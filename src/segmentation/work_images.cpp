@@ -1,5 +1,6 @@
 #include "segmentation/work_images.hpp"
 
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 namespace projtrack {
@@ -37,6 +38,26 @@ void resample_chroma(const ColorView& frame, WorkImages& out) {
   cv::mixChannels(planes, 2, &out.ycrcb, 1, from_to, 2);
 }
 
+// The tables that read video range (ColorView) as full range: OpenCV's gray and YCrCb are full
+// range, and the flow model's flow and colour mixture were measured on full-range frames
+// (DAVIS through Python's BGR). Luma, then YCrCb with its luma left as it is (mapped already).
+struct FullRangeTables {
+  cv::Mat luma, chroma;
+  FullRangeTables() : luma(1, 256, CV_8U), chroma(1, 256, CV_8UC3) {
+    for (int v = 0; v < 256; ++v) {
+      const auto y = cv::saturate_cast<std::uint8_t>(std::lround((v - 16) * 255.0 / 219.0));
+      const auto c = cv::saturate_cast<std::uint8_t>(std::lround(128 + (v - 128) * 255.0 / 224.0));
+      luma.at<std::uint8_t>(v) = y;
+      chroma.at<cv::Vec3b>(v) = {static_cast<std::uint8_t>(v), c, c};
+    }
+  }
+};
+
+const FullRangeTables& full_range_tables() {
+  static const FullRangeTables tables;
+  return tables;
+}
+
 }  // namespace
 
 void build_work_images(const ColorView& frame, int scale, WorkImages& out) {
@@ -48,6 +69,7 @@ void build_work_images(const ColorView& frame, int scale, WorkImages& out) {
                       (l.height + out.scale - 1) / out.scale);
   cv::resize(wrap(l.data, l.width, l.height, l.stride, CV_8U), out.gray, work, 0, 0,
              cv::INTER_AREA);
+  cv::LUT(out.gray, full_range_tables().luma, out.gray);
   if (!frame.has_chroma()) {
     cv::cvtColor(out.gray, out.bgr, cv::COLOR_GRAY2BGR);
     return;
@@ -56,6 +78,7 @@ void build_work_images(const ColorView& frame, int scale, WorkImages& out) {
   const int luma_to[] = {0, 0};
   cv::mixChannels(&out.gray, 1, &out.ycrcb, 1, luma_to, 1);
   resample_chroma(frame, out);
+  cv::LUT(out.ycrcb, full_range_tables().chroma, out.ycrcb);
   cv::cvtColor(out.ycrcb, out.bgr, cv::COLOR_YCrCb2BGR);
 }
 

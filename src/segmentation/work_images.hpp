@@ -17,8 +17,9 @@ struct WorkImages {
   cv::Size size() const { return gray.size(); }
 };
 
-// `frame` at `scale`: luma averaged over each block, chroma resampled to it; a gray frame's
-// colour is its luma. Reuses `out`'s buffers.
+// `frame` at `scale`: luma averaged over each block, chroma resampled to it, both read from the
+// frame's video range as full range (OpenCV's); a gray frame's colour is its luma. Reuses
+// `out`'s buffers.
 void build_work_images(const ColorView& frame, int scale, WorkImages& out);
 
 }  // namespace projtrack

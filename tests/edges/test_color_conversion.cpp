@@ -1,6 +1,8 @@
-// Packed RGB to gray; one component of a packed format gathered into a plane.
+// Packed RGB to video-range luma and chroma; full range to video range; one component of a
+// packed format gathered into a plane.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "projtrack/color_conversion.hpp"
@@ -12,7 +14,8 @@ TEST(GrayConversion, Bt601WeightsInEveryComponentOrderAndPixelSize) {
   // Two rows of red, green, blue, white, black, padded to 23 bytes per row.
   const std::uint8_t colours[5][3] = {
       {255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 255}, {0, 0, 0}};
-  const std::uint8_t expected[5] = {77, 149, 29, 255, 0};
+  // Video range: black 16, white 235 (BT.601's studio swing, as I420 stores them).
+  const std::uint8_t expected[5] = {82, 144, 41, 235, 16};
   for (int pixel_stride : {3, 4}) {
     for (int r_off : {0, 1, 2}) {
       const int g_off = (r_off + 1) % 3, b_off = (r_off + 2) % 3;
@@ -26,7 +29,7 @@ TEST(GrayConversion, Bt601WeightsInEveryComponentOrderAndPixelSize) {
           p[b_off] = colours[x][2];
         }
       std::vector<std::uint8_t> gray(2 * 7, 0xCD);
-      packed_rgb_to_gray(&rgb[r_off], &rgb[g_off], &rgb[b_off], pixel_stride, row_stride, 5, 2,
+      packed_rgb_to_luma(&rgb[r_off], &rgb[g_off], &rgb[b_off], pixel_stride, row_stride, 5, 2,
                          gray.data(), 7);
       for (int y = 0; y < 2; ++y) {
         for (int x = 0; x < 5; ++x) EXPECT_EQ(gray[y * 7 + x], expected[x]) << pixel_stride;
@@ -34,6 +37,63 @@ TEST(GrayConversion, Bt601WeightsInEveryComponentOrderAndPixelSize) {
       }
     }
   }
+}
+
+// The chroma of every 2×2 block is its mean colour's (a last odd row or column: its own pixels'),
+// at video range: a neutral colour 128, pure blue's Cb and pure red's Cr 240.
+TEST(GrayConversion, ChromaOfEachBlocksMeanColourAtVideoRange) {
+  const int width = 3, height = 3;  // odd: the last column and row are blocks of their own
+  std::vector<std::uint8_t> rgb(width * height * 3, 0);
+  const auto set = [&](int x, int y, int r, int g, int b) {
+    std::uint8_t* p = &rgb[(y * width + x) * 3];
+    p[0] = static_cast<std::uint8_t>(r), p[1] = static_cast<std::uint8_t>(g);
+    p[2] = static_cast<std::uint8_t>(b);
+  };
+  set(0, 0, 255, 0, 0), set(1, 0, 0, 0, 255), set(0, 1, 255, 0, 0), set(1, 1, 0, 0, 255);
+  set(2, 0, 0, 0, 255), set(2, 1, 0, 0, 255);                         // the last column: blue
+  set(0, 2, 255, 0, 0), set(1, 2, 255, 0, 0), set(2, 2, 90, 90, 90);  // the last row
+  std::vector<std::uint8_t> u(4), v(4);
+  packed_rgb_to_chroma(&rgb[0], &rgb[1], &rgb[2], 3, width * 3, width, height, u.data(), v.data(),
+                       2);
+  EXPECT_EQ(u[0], u_of_sums(2 * 255, 0, 2 * 255));  // half red, half blue: magenta's mean
+  EXPECT_EQ(v[0], v_of_sums(2 * 255, 0, 2 * 255));
+  EXPECT_EQ(u[1], 240);  // blue
+  EXPECT_EQ(v[1], v_of(0, 0, 255));
+  EXPECT_EQ(u[2], u_of(255, 0, 0));  // red
+  EXPECT_EQ(v[2], 240);
+  EXPECT_EQ(u[3], 128);  // gray
+  EXPECT_EQ(v[3], 128);
+  EXPECT_EQ(u_of(255, 255, 255), 128);
+  EXPECT_EQ(luma_of(255, 255, 255), 235);
+  EXPECT_EQ(luma_of(0, 0, 0), kVideoBlack);
+}
+
+// A full-range frame (GRAY8, JPEG's YUV) at video range: luma 0–255 to 16–235, chroma 0–255 to
+// 16–240 about 128, in every chroma layout, the exposure carried over.
+TEST(GrayConversion, FullRangeMappedToVideoRange) {
+  const int width = 4, height = 2;
+  const std::uint8_t luma[] = {0, 128, 255, 10, 20, 30, 40, 50};
+  // NV12-like: U, V pairs (pixel stride 2), one per 2×2 block, rows padded to 6 bytes.
+  const std::uint8_t uv[] = {0, 255, 128, 64, 0xAB, 0xAB};
+  ColorView full;
+  full.luma = ImageView(luma, width, height, width);
+  full.chroma = ChromaView{uv, uv + 1, 6, 2, 1, 1};
+  full.exposure.gain = 2;
+  std::vector<std::uint8_t> planes;
+  const ColorView video = full_to_video_range(full, planes);
+  EXPECT_EQ(video.luma.at(0, 0), 16);
+  EXPECT_EQ(video.luma.at(1, 0), 126);  // 16 + 128 · 219 / 255 = 125.9
+  EXPECT_EQ(video.luma.at(2, 0), 235);
+  EXPECT_EQ(video.chroma.u_at(0, 0), 16);
+  EXPECT_EQ(video.chroma.v_at(0, 0), 240);
+  EXPECT_EQ(video.chroma.u_at(2, 1), 128);
+  EXPECT_EQ(video.chroma.v_at(3, 1), 72);  // 128 - 64 · 224 / 255 = 71.8
+  EXPECT_EQ(video.exposure.gain, 2);
+  // Gray: the luma alone.
+  full.chroma = {};
+  const ColorView gray = full_to_video_range(full, planes);
+  EXPECT_FALSE(gray.has_chroma());
+  EXPECT_EQ(gray.luma.at(3, 1), std::lround(16 + 50 * 219.0 / 255.0));
 }
 
 // YUY2's luma (every second byte from the first), UYVY's (from the second), chroma planes

@@ -6,7 +6,7 @@
 #include "core/work_frame.hpp"
 #include "edges/box_blur.hpp"
 #include "edges/canny.hpp"
-#include "edges/gray_conversion.hpp"
+#include "projtrack/color_conversion.hpp"
 #include "projtrack/edge_detection.hpp"
 #include "projtrack/finder_params.hpp"
 
@@ -65,11 +65,14 @@ void colour_conversions(const Frame& f, const Effort& e, std::FILE* out) {
   const std::uint8_t* p = f.rgb.data;
   const auto stride = static_cast<std::ptrdiff_t>(f.rgb.step);
   cv::Mat gray(f.height, f.width, CV_8U), cv_gray(f.height, f.width, CV_8U);
-  Row r{"packed RGB to gray (BT.601)", "src/edges/gray_conversion.cpp packed_rgb_to_gray",
-        "cv::cvtColor RGB2GRAY", f.name + " RGB", ""};
+  // Ours is at video range (16-235), OpenCV's gray at full range: the time compared, the values
+  // differ by design.
+  Row r{"packed RGB to luma (BT.601, video range)",
+        "src/edges/color_conversion.cpp packed_rgb_to_luma", "cv::cvtColor RGB2GRAY (full range)",
+        f.name + " RGB", ""};
   const Duel g = duel(
       [&] {
-        packed_rgb_to_gray(p, p + 1, p + 2, 3, stride, f.width, f.height, gray.data, gray.step);
+        packed_rgb_to_luma(p, p + 1, p + 2, 3, stride, f.width, f.height, gray.data, gray.step);
       },
       [&] { cv::cvtColor(f.rgb, cv_gray, cv::COLOR_RGB2GRAY); }, e.rounds, e.calls);
   r.same = same_pixels(gray, cv_gray);
@@ -78,7 +81,7 @@ void colour_conversions(const Frame& f, const Effort& e, std::FILE* out) {
   cv::Mat u(f.height / 2, f.width / 2, CV_8U), v(f.height / 2, f.width / 2, CV_8U);
   cv::Mat ycrcb(f.height, f.width, CV_8UC3);
   r = {"packed RGB to chroma (Cb, Cr at half resolution)",
-       "src/edges/gray_conversion.cpp packed_rgb_to_chroma",
+       "src/edges/color_conversion.cpp packed_rgb_to_chroma",
        "cv::cvtColor RGB2YCrCb (all three, full resolution)", f.name + " RGB",
        "not compared (the library's is at full resolution)"};
   const Duel c = duel(
@@ -92,7 +95,7 @@ void colour_conversions(const Frame& f, const Effort& e, std::FILE* out) {
   cv::Mat yuy2(f.height, f.width, CV_8UC2, cv::Scalar(0, 128));
   cv::insertChannel(f.luma, yuy2, 0);
   cv::Mat luma(f.height, f.width, CV_8U), cv_luma(f.height, f.width, CV_8U);
-  r = {"packed YUV's luma into a plane", "src/edges/gray_conversion.cpp gather_component",
+  r = {"packed YUV's luma into a plane", "src/edges/color_conversion.cpp gather_component",
        "cv::cvtColor YUV2GRAY_YUY2", f.name + " YUY2", ""};
   const Duel y = duel(
       [&] { gather_component(yuy2.data, 2, yuy2.step, f.width, f.height, luma.data, luma.step); },
