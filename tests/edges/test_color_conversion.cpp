@@ -39,6 +39,58 @@ TEST(GrayConversion, Bt601WeightsInEveryComponentOrderAndPixelSize) {
   }
 }
 
+TEST(GrayConversion, WideRowsGiveLumaOfEveryPixelInEveryLayout) {
+  // Rows long enough for the vectorised path (16 pixels at a time) and a scalar tail, in a buffer
+  // that ends with the last pixel (a read past it shows under AddressSanitizer): RGB, BGR, RGBx,
+  // BGRx, xRGB and xBGR layouts.
+  struct Layout {
+    int stride, r, g, b;
+  };
+  const Layout layouts[] = {{3, 0, 1, 2}, {3, 2, 1, 0}, {4, 0, 1, 2},
+                            {4, 2, 1, 0}, {4, 1, 2, 3}, {4, 3, 2, 1}};
+  constexpr int kWidth = 71, kHeight = 3;
+  for (const Layout& l : layouts) {
+    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(l.stride) * kWidth * kHeight);
+    for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<std::uint8_t>(i * 37 + i / 7);
+    std::vector<std::uint8_t> luma(kWidth * kHeight);
+    packed_rgb_to_luma(&rgb[l.r], &rgb[l.g], &rgb[l.b], l.stride, l.stride * kWidth, kWidth,
+                       kHeight, luma.data(), kWidth);
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) {
+        const std::uint8_t* p = &rgb[(y * kWidth + x) * l.stride];
+        ASSERT_EQ(luma[y * kWidth + x], luma_of(p[l.r], p[l.g], p[l.b]))
+            << "stride " << l.stride << ", R at " << l.r << ", pixel " << x << "," << y;
+      }
+  }
+}
+
+TEST(GrayConversion, AColourFrameIsItsLumaAndChromaWhateverItsHeight) {
+  // packed_rgb_to_color converts stripe by stripe: the same planes as the whole-frame calls, for
+  // heights that end in a part stripe and an odd row.
+  constexpr int kWidth = 45;
+  for (const int height : {1, 16, 17, 37}) {
+    std::vector<std::uint8_t> bgr(3 * kWidth * height);
+    for (std::size_t i = 0; i < bgr.size(); ++i) bgr[i] = static_cast<std::uint8_t>(i * 53 + 7);
+    std::vector<std::uint8_t> planes;
+    const ColorView c =
+        packed_rgb_to_color(&bgr[2], &bgr[1], &bgr[0], 3, 3 * kWidth, kWidth, height, planes);
+    const int cw = (kWidth + 1) / 2, ch = (height + 1) / 2;
+    std::vector<std::uint8_t> luma(kWidth * height), u(cw * ch), v(cw * ch);
+    packed_rgb_to_luma(&bgr[2], &bgr[1], &bgr[0], 3, 3 * kWidth, kWidth, height, luma.data(),
+                       kWidth);
+    packed_rgb_to_chroma(&bgr[2], &bgr[1], &bgr[0], 3, 3 * kWidth, kWidth, height, u.data(),
+                         v.data(), cw);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < kWidth; ++x)
+        ASSERT_EQ(c.luma.data[y * c.luma.stride + x], luma[y * kWidth + x]) << height;
+    for (int y = 0; y < ch; ++y)
+      for (int x = 0; x < cw; ++x) {
+        ASSERT_EQ(c.chroma.u[y * c.chroma.stride + x], u[y * cw + x]) << height;
+        ASSERT_EQ(c.chroma.v[y * c.chroma.stride + x], v[y * cw + x]) << height;
+      }
+  }
+}
+
 // The chroma of every 2×2 block is its mean colour's (a last odd row or column: its own pixels'),
 // at video range: a neutral colour 128, pure blue's Cb and pure red's Cr 240.
 TEST(GrayConversion, ChromaOfEachBlocksMeanColourAtVideoRange) {
