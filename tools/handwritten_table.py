@@ -24,6 +24,10 @@ REASONS = {
                      "per frame. OpenCV itself is there (the plugin links libprojtrack, which "
                      "links it): that is not the reason",
     "SilhouetteModel::recentre": "not measured alone (a private step of SilhouetteModel)",
+    "packed_rgb_to_color": "OpenCV's I420 chroma is each 2×2 block's top-left pixel; the tracker "
+                           "reads each block's mean, as an encoder's or videoconvert's I420 "
+                           "holds it, so that one picture as RGB and as I420 reads alike "
+                           "(element.md, Formats: tests/gst/test_formats.py)",
 }
 
 
