@@ -1,4 +1,4 @@
-"""The development set of real footage (issue 25): which clips, in which Debian package, where each
+"""The development set of real footage: which clips, in which Debian package, where each
 file lies in it, and which variants each clip is run with. One table, read by prepare.py (the
 plan projtrack-real runs), by the report and by the accuracy test.
 

@@ -1,9 +1,9 @@
-"""How a run on real footage is scored (issue 25, item 3), from projtrack-real's runs.csv and the
+"""How a run on real footage is scored, from projtrack-real's runs.csv and the
 entry's truth (DATA/truth/<entry>.csv, written by prepare.py).
 
 A frame is **kept** when the run measured the object on it, its centroid lies within
 WITHIN·√(true area) of the true one **and** its area lies within [AREA_MIN, AREA_MAX]× the true
-area; the old measure (**kept, centroid only**) drops the area condition. Only frames where the
+area; **kept, centroid only** drops the area condition. Only frames where the
 object is in view (true area > 0) are scored; what a run reports on the others is counted apart.
 A frame of the truth the run has no row for counts as a miss. Anything not measured (a missing
 row, a NaN) never passes.
@@ -63,7 +63,7 @@ def centroid_error(r, t):
 
 
 def near(r, t):
-    """The old measure: centroid within WITHIN·√area (NaN and missing never pass)."""
+    """Kept by the centroid alone: within WITHIN·√area (NaN and missing never pass)."""
     return centroid_error(r, t) <= WITHIN * math.sqrt(t["area"])
 
 
@@ -72,7 +72,7 @@ def area_ratio(r, t):
 
 
 def kept(r, t):
-    """The new measure: near, and the area within [AREA_MIN, AREA_MAX]× the truth's."""
+    """Kept: near, and the area within [AREA_MIN, AREA_MAX]× the truth's."""
     return near(r, t) and AREA_MIN <= area_ratio(r, t) <= AREA_MAX
 
 

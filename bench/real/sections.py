@@ -84,10 +84,11 @@ def header(doc):
     w()
     w("The truth of each clip is bench/real/truth/ (made by colour, shape and motion rules checked "
       "by eye, never from projtrack: bench/real/truth/README.md); a variant's truth is the "
-      "clip's silhouettes moved as the variant moves the frame (prepare.py). **Kept** (the new "
-      f"measure): the centroid within {WITHIN:g}·√area of the true one and the area within "
-      f"[{AREA_MIN:g}, {AREA_MAX:g}]× the truth's; the old measure (centroid only) beside it "
-      "(`new / old` in the tables). Only frames where the object is in view are scored; a "
+      "clip's silhouettes moved as the variant moves the frame (prepare.py). **Kept**: the "
+      f"centroid within {WITHIN:g}·√area of the true one and the area within "
+      f"[{AREA_MIN:g}, {AREA_MAX:g}]× the truth's; kept by the centroid alone "
+      "beside it (`kept / centroid only` in the tables). Only frames where the object is in view "
+      "are scored; a "
       "frame the run has no row for, lost or searching counts as a miss. The no-seed target "
       "applies where one object moves: where at most "
       f"{100 * ONE_MOVER:.0f} % of the pixels that change between frames lie away from the "
@@ -151,7 +152,7 @@ def target_summary(res):
 def targets(doc):
     w = doc.w
     s = target_summary(doc.res)
-    w("## Targets (issue 25)")
+    w("## Targets")
     w()
     w(f"Per run of the default method: kept ≥ {fmt_pct(GOAL_KEPT)} (≥ "
       f"{fmt_pct(GOAL_KEPT_THROWN)} of the in-view frames on the thrown ball, balle1), median "
@@ -190,7 +191,7 @@ def clip(doc, name):
           f"{cell(res, e, 'projtrack no seed', False)} | "
           + " | ".join(cell(res, e, p, False) for p in peers) + " |")
     w()
-    w("Each cell: kept (new measure) / kept (centroid only), over the in-view frames; met or "
+    w("Each cell: kept (centroid and area) / kept (centroid only), over the in-view frames; met or "
       "not met: all three targets of the start. The clip as decoded, every run:")
     w()
     w("| run | kept | centroid only | median error (√area) | area ±25 % | missing rows | "

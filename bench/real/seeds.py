@@ -1,7 +1,7 @@
-"""Where a user might start the tracker, from the first in-view frame's true silhouette (issue 25's
-targets): its deepest point (the point farthest from its border), the quarter points (the point
-deepest inside the silhouette in each of its four quadrants about the centroid: the middle of that
-part of the object) and its true box (`start-box`, and the box trackers' start)."""
+"""Where a user might start the tracker, from the first in-view frame's true silhouette (the
+benchmark's starts): its deepest point (the point farthest from its border), the quarter points
+(the point deepest inside the silhouette in each of its four quadrants about the centroid: the
+middle of that part of the object) and its true box (`start-box`, and the box trackers' start)."""
 import cv2
 import numpy as np
 

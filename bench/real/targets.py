@@ -4,7 +4,7 @@ import math
 
 from report_kit import MISSING, TARGET, fmt_pct, fmt_x, missing, verdict
 
-GOAL_KEPT = 0.95         # a start's share of in-view frames kept (new measure), at least
+GOAL_KEPT = 0.95         # a start's share of in-view frames kept (centroid and area), at least
 GOAL_KEPT_THROWN = 0.80  # the same on a thrown ball's clip
 GOAL_MEDIAN = 0.05       # median centroid error as a share of √area, at most
 GOAL_AREA = 0.90         # share of in-view frames with the area within ±25 %, at least

@@ -104,7 +104,7 @@ for q in requests:
                                            f"{int(i):03d}.jpg")), q
 subprocess.run(report, check=True, timeout=300)
 text = open(os.path.join(out, "real_footage.md")).read()
-for heading in ["## Targets (issue 25)", "## cup", "## ellipse", "## balle1", "## Speed",
+for heading in ["## Targets", "## cup", "## ellipse", "## balle1", "## Speed",
                 "## Where it falls short", "## Runs cut short"]:
     assert heading in text, heading
 assert "nan" not in text.lower(), "a NaN in the report"
