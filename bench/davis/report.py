@@ -237,7 +237,7 @@ def write_doc(res, doc_dir, path):
     m = res.meta
     lines += ["## The run", "",
               f"- data: `{m['data']}`; sequences: {', '.join(res.sequences)}",
-              f"- projtrack module {m['module']['version']} (`{m['module']['file']}`), "
+              f"- projtrack module {m['module']['version']} (`{os.path.basename(m['module']['file'])}`), "
               f"settings: " + ", ".join(f"{k}={v}" for k, v in m["module"]["settings"].items()),
               f"- OpenCV {m['opencv']}, Python {m['python']}; {m['machine']['system']}, "
               f"{m['machine']['cores']} cores",
