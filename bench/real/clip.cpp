@@ -16,9 +16,15 @@
 
 namespace projtrack::bench {
 
-Clip::~Clip() {
+Clip::~Clip() { release_frames(); }
+
+void Clip::release_frames() {
   for (GstBuffer* b : i420_buffers) gst_buffer_unref(b);
   for (GstBuffer* b : rgb_buffers) gst_buffer_unref(b);
+  i420_buffers = {};
+  rgb_buffers = {};
+  frames = {};
+  median_.release();
 }
 
 const cv::Mat& Clip::median_luma() const {

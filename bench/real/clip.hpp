@@ -45,6 +45,9 @@ struct Clip {
   // The per-pixel median luma of up to 99 frames spread over the clip: the scene's background.
   const cv::Mat& median_luma() const;
   std::string caps(const char* format) const;
+  // Frees the frames, their buffers and the median once the clip's runs are done; what meta.json
+  // says of it (name, size, frame count: pts) stays.
+  void release_frames();
 
  private:
   mutable cv::Mat median_;

@@ -108,7 +108,7 @@ int run(const Args& a) {
     if (!runs->ok() || !speed) return std::fprintf(stderr, "projtrack-real: cannot write\n"), 1;
     std::fprintf(speed, "clip,resolution,what,median_us,frames\n");
   }
-  std::vector<std::unique_ptr<Clip>> done;  // their frames freed: for meta.json
+  std::vector<std::unique_ptr<Clip>> done;  // their frames released: for meta.json
   Progress progress(steps);
   for (const auto& entries : by_source(plan)) {
     Clip source;
@@ -130,8 +130,7 @@ int run(const Args& a) {
         run_all(*c, *runs, progress, a.only_default);
         if (c->variant.empty() && c->has_truth()) speed_1080p(*c, speed, progress);
       }
-      c->frames.clear();
-      c->frames.shrink_to_fit();
+      c->release_frames();  // a done clip kept only for meta.json: its frames and buffers freed
       done.push_back(std::move(c));
     }
   }

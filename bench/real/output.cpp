@@ -60,7 +60,7 @@ std::string json_string(const std::string& s) {
 }
 
 void write_clip_meta(std::ofstream& meta, const Clip& c) {
-  meta << json_string(c.name) << ": {\"frames\": " << c.frames.size() << ", \"width\": " << c.width
+  meta << json_string(c.name) << ": {\"frames\": " << c.pts.size() << ", \"width\": " << c.width
        << ", \"height\": " << c.height << ", \"fps\": " << static_cast<double>(c.fps_n) / c.fps_d
        << ", \"truth\": " << (c.has_truth() ? "true" : "false") << ", \"variant\": \"" << c.variant
        << "\", \"path\": " << json_string(c.path) << ", \"properties\": {";

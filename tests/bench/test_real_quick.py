@@ -37,6 +37,10 @@ for r in csv.DictReader(open(os.path.join(out, "runs.csv"))):
     by.setdefault((r["clip"], r["tracker"]), []).append(r)
 meta = json.load(open(os.path.join(out, "meta.json")))
 assert sorted(meta["clips"]) == sorted(ENTRIES), list(meta["clips"])
+# Each clip's frame count, recorded after its frames were released (it read 0 when the count
+# was taken from the released frames).
+for e in ENTRIES:
+    assert 0 < meta["clips"][e]["frames"] <= FRAMES * 3, (e, meta["clips"][e]["frames"])
 default = meta["default_method"]
 cup = {t for (c, t) in by if c == "cup"}
 for expected in [f"projtrack {default}", "projtrack start-box", "projtrack no seed",
