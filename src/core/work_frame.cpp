@@ -139,6 +139,22 @@ int weight(const ChromaSpan& span, int k) {
   return k == 0 ? span.first_weight : k == span.count - 1 ? span.last_weight : span.inner;
 }
 
+// su[k] += w · u[k · stride] (and sv from v) for k < n: planar chroma (stride 1) in a loop the
+// compiler vectorises.
+PROJTRACK_VECTOR_CLONES void add_weighted(const std::uint8_t* u, const std::uint8_t* v, int stride,
+                                          int n, std::uint32_t w, std::uint32_t* __restrict__ su,
+                                          std::uint32_t* __restrict__ sv) {
+  if (stride == 1) {
+    for (int k = 0; k < n; ++k) su[k] += w * u[k];
+    for (int k = 0; k < n; ++k) sv[k] += w * v[k];
+    return;
+  }
+  for (int k = 0; k < n; ++k) {
+    su[k] += w * u[static_cast<std::ptrdiff_t>(k) * stride];
+    sv[k] += w * v[static_cast<std::ptrdiff_t>(k) * stride];
+  }
+}
+
 // The work pixels' chroma in `rect`: each the mean over its block's pixels of the chroma sample
 // that covers each, whatever the layout stores them at (I420's one per 2×2 pixels, YUY2's one per
 // 2×1, Y444's and RGB's every pixel), so that every layout gives a block the same colour. A
@@ -146,38 +162,59 @@ int weight(const ChromaSpan& span, int k) {
 // and full-resolution chroma (an RGB frame's) at one pixel where I420 has the mean of four; the
 // samples' plain mean would weigh a sample half in an odd-sized block as much as one inside it.
 void average_chroma(const ColorView& frame, const Rect& rect, int s, std::vector<ChromaSpan>& cols,
-                    std::uint8_t* u, std::uint8_t* v) {
+                    std::vector<std::uint32_t>& sums, std::uint8_t* u, std::uint8_t* v) {
   const int w = rect.width, h = rect.height;
+  if (w <= 0 || h <= 0) return;
   const int fw = frame.luma.width, fh = frame.luma.height;
   const ChromaView& c = frame.chroma;
+  if (s == 1 << c.shift_x && s == 1 << c.shift_y) {
+    // One sample covers each block (4:2:0 at scale 2, 4:4:4 at scale 1; a block the frame's edge
+    // cuts too): the mean is that sample.
+    for (int y = 0; y < h; ++y) {
+      const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(rect.y + y) * c.stride;
+      for (int x = 0; x < w; ++x) {
+        const std::ptrdiff_t i = row + static_cast<std::ptrdiff_t>(rect.x + x) * c.pixel_stride;
+        u[static_cast<std::size_t>(y) * w + x] = c.u[i];
+        v[static_cast<std::size_t>(y) * w + x] = c.v[i];
+      }
+    }
+    return;
+  }
   // The chroma columns of a row's blocks are the same on every row.
   cols.resize(static_cast<std::size_t>(w));
   for (int x = 0; x < w; ++x) {
     const int fx0 = (rect.x + x) * s;
     cols[x] = samples_of(fx0, std::min(fw, fx0 + s), c.shift_x);
   }
+  // Each block row: the weighted sums down the chroma columns it covers (one pass over those
+  // samples), then each block's weighted sum across its columns.
+  const int c0 = cols[0].first, span = cols[w - 1].first + cols[w - 1].count - c0;
+  sums.resize(2 * static_cast<std::size_t>(span));
+  std::uint32_t* su = sums.data();
+  std::uint32_t* sv = su + span;
   for (int y = 0; y < h; ++y) {
     const int fy0 = (rect.y + y) * s;
     const ChromaSpan rows = samples_of(fy0, std::min(fh, fy0 + s), c.shift_y);
+    std::fill(su, su + 2 * span, 0u);
+    for (int r = 0; r < rows.count; ++r) {
+      const std::uint32_t wr = static_cast<std::uint32_t>(weight(rows, r));
+      const std::ptrdiff_t at = static_cast<std::ptrdiff_t>(rows.first + r) * c.stride +
+                                static_cast<std::ptrdiff_t>(c0) * c.pixel_stride;
+      add_weighted(c.u + at, c.v + at, c.pixel_stride, span, wr, su, sv);
+    }
     std::uint8_t* uo = u + static_cast<std::size_t>(y) * w;
     std::uint8_t* vo = v + static_cast<std::size_t>(y) * w;
     for (int x = 0; x < w; ++x) {
       const ChromaSpan& col = cols[x];
-      std::uint32_t su = 0, sv = 0;
-      for (int r = 0; r < rows.count; ++r) {
-        std::ptrdiff_t i = static_cast<std::ptrdiff_t>(rows.first + r) * c.stride +
-                           static_cast<std::ptrdiff_t>(col.first) * c.pixel_stride;
-        std::uint32_t ru = 0, rv = 0;
-        for (int k = 0; k < col.count; ++k, i += c.pixel_stride) {
-          ru += static_cast<std::uint32_t>(weight(col, k)) * c.u[i];
-          rv += static_cast<std::uint32_t>(weight(col, k)) * c.v[i];
-        }
-        su += static_cast<std::uint32_t>(weight(rows, r)) * ru;
-        sv += static_cast<std::uint32_t>(weight(rows, r)) * rv;
+      std::uint32_t bu = 0, bv = 0;
+      for (int k = 0; k < col.count; ++k) {
+        const std::uint32_t wc = static_cast<std::uint32_t>(weight(col, k));
+        bu += wc * su[col.first - c0 + k];
+        bv += wc * sv[col.first - c0 + k];
       }
       const std::uint32_t n = static_cast<std::uint32_t>(rows.pixels * col.pixels);
-      uo[x] = static_cast<std::uint8_t>((su + n / 2) / n);
-      vo[x] = static_cast<std::uint8_t>((sv + n / 2) / n);
+      uo[x] = static_cast<std::uint8_t>((bu + n / 2) / n);
+      vo[x] = static_cast<std::uint8_t>((bv + n / 2) / n);
     }
   }
 }
@@ -230,7 +267,7 @@ void WorkFrame::build(const ColorView& frame, int scale, const Rect& region) {
   if (!chroma) return;
   std::uint8_t* u = luma + n;
   std::uint8_t* v = u + n;
-  average_chroma(frame, rect_, s, spans_, u, v);
+  average_chroma(frame, rect_, s, spans_, chroma_sums_, u, v);
   if (!e.identity()) apply_table(chroma_lut_, u, 2 * n);  // u, then v just after
   view_.chroma = {u, v, w, 1, 0, 0};
 }

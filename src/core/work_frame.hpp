@@ -34,9 +34,10 @@ class WorkFrame {
 
  private:
   std::vector<std::uint8_t> planes_;
-  std::vector<std::uint32_t> sums_;     // per block of a row
-  std::vector<std::uint16_t> columns_;  // per frame column of a block row: its s pixels' sum
-  std::vector<ChromaSpan> spans_;       // chroma columns of each block of a row
+  std::vector<std::uint32_t> sums_;         // per block of a row
+  std::vector<std::uint16_t> columns_;      // per frame column of a block row: its s pixels' sum
+  std::vector<ChromaSpan> spans_;           // chroma columns of each block of a row
+  std::vector<std::uint32_t> chroma_sums_;  // per chroma column of a block row: weighted Cb, Cr
   std::array<std::uint8_t, 256> luma_lut_{}, chroma_lut_{};  // the frame's exposure
   ColorView view_;
   Rect rect_;

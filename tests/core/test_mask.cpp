@@ -193,8 +193,13 @@ TEST(SilhouettePieces, ANeckSplitsTwoBlobsAndEveryPixelBelongsToOne) {
 
 // The work frame of a W × H random frame at every scale in `scales`, checked pixel by pixel.
 void expect_block_means(int W, int H, std::initializer_list<int> scales) {
-  const cv::Mat i420 = test::random_i420(W, H, 255);
-  const ColorView c = test::i420_view(i420, W, H);
+  // Random 4:2:0 planes (odd sizes too: the last chroma sample covers a last odd row/column).
+  const int cw = (W + 1) / 2, ch = (H + 1) / 2;
+  cv::Mat planes(1, W * H + 2 * cw * ch, CV_8U);
+  cv::randu(planes, 0, 256);
+  ColorView c;
+  c.luma = ImageView(planes.data, W, H, W);
+  c.chroma = {planes.data + W * H, planes.data + W * H + cw * ch, cw, 1, 1, 1};
   // Regions clipped to the frame's blocks (the last ones partial unless s divides the frame),
   // and regions inside it (all blocks whole).
   for (const bool inside : {false, true})
@@ -229,6 +234,8 @@ void expect_block_means(int W, int H, std::initializer_list<int> scales) {
 
 TEST(WorkFrame, BlocksAreTheMeansOfTheirPixels) {
   expect_block_means(64, 48, {1, 2, 3, 4, 5, 7, 8, 9, 13});
+  // Odd sizes: the last block at scale 2 is cut by the frame's edge, its one chroma sample too.
+  expect_block_means(63, 47, {1, 2, 3});
   // Large blocks, whole ones among them: their means by a multiplication, exact to the last
   // level up to the largest scale the column sums take (257), and past it (the plain sums).
   expect_block_means(1200, 1040, {40, 97, 257, 260});
