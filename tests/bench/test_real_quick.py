@@ -114,4 +114,23 @@ for heading in ["## Targets", "## cup", "## ellipse", "## balle1", "## Speed",
 assert "nan" not in text.lower(), "a NaN in the report"
 if requests:
     assert "![" in text and os.listdir(os.path.join(out, "sheets")), "no contact sheet"
-print("real-footage quick run and report: ok")
+
+# compare_runs.py: a run against itself changes nothing; against a copy in which one start's
+# centroids are moved far off, that start is worse.
+moved = os.path.join(out, "moved")
+os.makedirs(moved, exist_ok=True)
+rows = list(csv.DictReader(open(os.path.join(out, "runs.csv"))))
+spoiled = ("cup", f"projtrack {default}")
+with open(os.path.join(moved, "runs.csv"), "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=rows[0].keys())
+    w.writeheader()
+    for r in rows:
+        if (r["clip"], r["tracker"]) == spoiled and r["centroid_x"] not in ("", "nan"):
+            r = dict(r, centroid_x=str(float(r["centroid_x"]) + 1000))
+        w.writerow(r)
+compare = [sys.executable, os.path.join(bench_real, "compare_runs.py"), out, out]
+same = subprocess.run(compare + [out], check=True, timeout=300, capture_output=True, text=True)
+assert "better by > 2 points: 0; worse by > 2 points: 0" in same.stdout, same.stdout
+worse = subprocess.run(compare + [moved], check=True, timeout=300, capture_output=True, text=True)
+assert "better by > 2 points: 0; worse by > 2 points: 1;" in worse.stdout, worse.stdout
+print("real-footage quick run, report and comparison: ok")
