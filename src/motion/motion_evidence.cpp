@@ -12,6 +12,20 @@ cv::Rect support_of(const cv::Mat& values, cv::Mat& buffer) {
   return cv::boundingRect(buffer);
 }
 
+cv::Rect grown_within(const cv::Rect& r, int by, cv::Size size) {
+  return cv::Rect(r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by) & cv::Rect({0, 0}, size);
+}
+
+cv::Rect square_ring(const cv::Mat& inside, int width, cv::Mat& count, cv::Mat& around) {
+  const cv::Rect near = grown_within(cv::boundingRect(inside), width, inside.size());
+  const cv::Mat in = inside(near);
+  cv::boxFilter(in, count, CV_32S, {2 * width + 1, 2 * width + 1}, {-1, -1}, false,
+                cv::BORDER_CONSTANT | cv::BORDER_ISOLATED);
+  cv::compare(count, 0, around, cv::CMP_GT);
+  around.setTo(0, in);
+  return near;
+}
+
 void carry_along_flow(const cv::Mat& last, const cv::Mat& flow, cv::Mat& map, cv::Mat& prior) {
   prior.create(flow.size(), CV_32F);
   prior.setTo(0);
@@ -20,9 +34,7 @@ void carry_along_flow(const cv::Mat& last, const cv::Mat& flow, cv::Mat& map, cv
   const cv::Rect held = support_of(last, map);
   if (held.empty()) return;
   const int reach = static_cast<int>(std::ceil(cv::norm(flow, cv::NORM_INF))) + 1;
-  const cv::Rect to =
-      cv::Rect(held.x - reach, held.y - reach, held.width + 2 * reach, held.height + 2 * reach) &
-      cv::Rect(0, 0, flow.cols, flow.rows);
+  const cv::Rect to = grown_within(held, reach, flow.size());
   map.create(to.size(), CV_32FC2);
   for (int y = 0; y < to.height; ++y) {
     const cv::Point2f* f = flow.ptr<cv::Point2f>(to.y + y) + to.x;
@@ -63,17 +75,9 @@ MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring
   const int area = cv::countNonZero(inside);
   if (area == 0) return s;
   const int r = std::max(1, static_cast<int>(ring * std::sqrt(static_cast<double>(area))));
-  // Within the object's box grown by the ring, the square ring as a box sum: the same pixels as
-  // a dilation by the square, at a cost that does not grow with its width.
-  const cv::Rect box = cv::boundingRect(inside);
-  const cv::Rect near = cv::Rect(box.x - r, box.y - r, box.width + 2 * r, box.height + 2 * r) &
-                        cv::Rect(0, 0, inside.cols, inside.rows);
-  const cv::Mat in = inside(near), moved = flow(near);
   cv::Mat count, around;
-  cv::boxFilter(in, count, CV_32S, {2 * r + 1, 2 * r + 1}, {-1, -1}, false,
-                cv::BORDER_CONSTANT | cv::BORDER_ISOLATED);
-  cv::compare(count, 0, around, cv::CMP_GT);
-  around.setTo(0, in);
+  const cv::Rect near = square_ring(inside, r, count, around);
+  const cv::Mat in = inside(near), moved = flow(near);
   s.valid = median_flow(moved, in, area, s.object) &&
             median_flow(moved, around, cv::countNonZero(around), s.surroundings);
   if (s.valid) s.separation = static_cast<float>(cv::norm(s.object - s.surroundings));

@@ -9,6 +9,15 @@ namespace projtrack {
 // The bounding box of the pixels of `values` (one channel) above 0; `buffer` is a buffer.
 cv::Rect support_of(const cv::Mat& values, cv::Mat& buffer);
 
+// `r` grown by `by` pixels on every side, within `size`.
+cv::Rect grown_within(const cv::Rect& r, int by, cv::Size size);
+
+// The pixels within `width` (a square's half-side) of `inside` (CV_8U) but not in it: computed
+// as a box sum (the same pixels as a dilation by the square, at a cost that does not grow with
+// its width) in `inside`'s box grown by `width`, which is returned; `around` (CV_8U, that box's
+// size) is set on the ring. `count` is a buffer.
+cv::Rect square_ring(const cv::Mat& inside, int width, cv::Mat& count, cv::Mat& around);
+
 // `last` (CV_32F, values in [0, 1], the last frame's silhouette) moved to this frame along the
 // backward flow `flow` (DenseFlow::backward()): each pixel takes the value where it came from
 // (0 from outside the frame). `map` is a buffer.

@@ -87,16 +87,10 @@ void FlowSegmenter::predict(const FlowModelParams& p) {
 }
 
 void FlowSegmenter::learn_colours(const WorkImages& img, const FlowModelParams& p) {
-  // The surroundings are the silhouette's square ring (a box sum, as the motion's ring) within its
-  // box grown by the ring's width.
+  // The surroundings are the silhouette's square ring, as the motion's.
   const double area = cv::countNonZero(mask_);
   const int r = std::max(1, static_cast<int>(p.colour_ring * std::sqrt(area)));
-  const cv::Rect box = cv::boundingRect(mask_);
-  const cv::Rect near = cv::Rect(box.x - r, box.y - r, box.width + 2 * r, box.height + 2 * r) &
-                        cv::Rect(0, 0, mask_.cols, mask_.rows);
-  cv::boxFilter(mask_(near), ring_count_, CV_32S, {2 * r + 1, 2 * r + 1}, {-1, -1}, false,
-                cv::BORDER_CONSTANT | cv::BORDER_ISOLATED);
-  cv::compare(ring_count_, 0, around_, cv::CMP_GT);
+  const cv::Rect near = square_ring(mask_, r, ring_count_, around_);
   colours_.learn(img.bgr(near), mask_(near), around_, p.learning_rate);
 }
 
@@ -109,10 +103,7 @@ void FlowSegmenter::remember(const FlowModelParams& p) {
 cv::Rect FlowSegmenter::reach_of_prior(int blur) {
   // The object can be only where its prior reaches: a piece beyond it holds none of the prior and
   // is dropped, and one joined to the object grows at most a blur's width a frame.
-  cv::compare(prior_, 0, support_, cv::CMP_GT);
-  const cv::Rect held = cv::boundingRect(support_);
-  const cv::Rect grown(held.x - blur, held.y - blur, held.width + 2 * blur, held.height + 2 * blur);
-  return grown & cv::Rect(0, 0, prior_.cols, prior_.rows);
+  return grown_within(support_of(prior_, support_), blur, prior_.size());
 }
 
 void FlowSegmenter::weigh_evidence(const WorkImages& img, int blur, const FlowModelParams& p) {
