@@ -5,6 +5,7 @@
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/core/hal/intrin.hpp>
+#include <opencv2/core/utility.hpp>
 
 namespace projtrack {
 
@@ -136,17 +137,21 @@ ColorView packed_rgb_to_color(const std::uint8_t* r, const std::uint8_t* g, cons
   const std::size_t chroma = static_cast<std::size_t>(cw) * ch;
   planes.resize(luma + 2 * chroma);
   // Luma and chroma stripe by stripe: the frame's rows are read from memory once, the chroma
-  // finding them still in the cache (a frame fresh from a camera or decoder is not).
+  // finding them still in the cache (a frame fresh from a camera or decoder is not). The stripes
+  // are independent: OpenCV's threads share them (reading a frame from memory is the cost).
   constexpr int kStripe = 16;  // rows: even, so that each stripe holds whole chroma rows
-  for (int y = 0; y < height; y += kStripe) {
-    const int rows = std::min(kStripe, height - y);
-    const std::ptrdiff_t in = y * row_stride;
-    const std::ptrdiff_t c = static_cast<std::ptrdiff_t>(y / 2) * cw;
-    packed_rgb_to_luma(r + in, g + in, b + in, pixel_stride, row_stride, width, rows,
-                       planes.data() + static_cast<std::ptrdiff_t>(y) * width, width);
-    packed_rgb_to_chroma(r + in, g + in, b + in, pixel_stride, row_stride, width, rows,
-                         planes.data() + luma + c, planes.data() + luma + chroma + c, cw);
-  }
+  const int stripes = (height + kStripe - 1) / kStripe;
+  cv::parallel_for_(cv::Range(0, stripes), [&](const cv::Range& range) {
+    for (int y = range.start * kStripe; y < std::min(height, range.end * kStripe); y += kStripe) {
+      const int rows = std::min(kStripe, height - y);
+      const std::ptrdiff_t in = y * row_stride;
+      const std::ptrdiff_t c = static_cast<std::ptrdiff_t>(y / 2) * cw;
+      packed_rgb_to_luma(r + in, g + in, b + in, pixel_stride, row_stride, width, rows,
+                         planes.data() + static_cast<std::ptrdiff_t>(y) * width, width);
+      packed_rgb_to_chroma(r + in, g + in, b + in, pixel_stride, row_stride, width, rows,
+                           planes.data() + luma + c, planes.data() + luma + chroma + c, cw);
+    }
+  });
   ColorView c;
   c.luma = ImageView(planes.data(), width, height, width);
   c.chroma = {planes.data() + luma, planes.data() + luma + chroma, cw, 1, 1, 1};

@@ -18,6 +18,10 @@ cv::Rect grown_within(const cv::Rect& r, int by, cv::Size size);
 // size) is set on the ring. `count` is a buffer.
 cv::Rect square_ring(const cv::Mat& inside, int width, cv::Mat& count, cv::Mat& around);
 
+// The largest |component| of `flow` (CV_32F, any channels): how far any pixel moved along x or
+// y (a NaN in `flow` may or may not show: carry_along_flow reads one as outside the frame).
+float largest_component(const cv::Mat& flow);
+
 // `last` (CV_32F, values in [0, 1], the last frame's silhouette) moved to this frame along the
 // backward flow `flow` (DenseFlow::backward()): each pixel takes the value where it came from
 // (0 from outside the frame). `map` is a buffer.

@@ -65,10 +65,11 @@ TEST(GrayConversion, WideRowsGiveLumaOfEveryPixelInEveryLayout) {
 }
 
 TEST(GrayConversion, AColourFrameIsItsLumaAndChromaWhateverItsHeight) {
-  // packed_rgb_to_color converts stripe by stripe: the same planes as the whole-frame calls, for
-  // heights that end in a part stripe and an odd row.
+  // packed_rgb_to_color converts stripe by stripe, the stripes shared by OpenCV's threads: the
+  // same planes as the whole-frame calls, for heights that end in a part stripe and an odd row,
+  // and one of many stripes.
   constexpr int kWidth = 45;
-  for (const int height : {1, 16, 17, 37}) {
+  for (const int height : {1, 16, 17, 37, 481}) {
     std::vector<std::uint8_t> bgr(3 * kWidth * height);
     for (std::size_t i = 0; i < bgr.size(); ++i) bgr[i] = static_cast<std::uint8_t>(i * 53 + 7);
     std::vector<std::uint8_t> planes;

@@ -53,6 +53,20 @@ TEST(DenseFlow, TinyFramesAndNewSizesGiveNoFlowAndNoException) {
   }
 }
 
+TEST(LargestComponent, IsTheFlowsInfinityNorm) {
+  // Widths that leave a part vector at each row's end; the largest anywhere, either sign.
+  cv::RNG rng(7);
+  for (const int width : {1, 5, 33, 427}) {
+    cv::Mat flow(9, width, CV_32FC2);
+    rng.fill(flow, cv::RNG::UNIFORM, -20, 20);
+    EXPECT_FLOAT_EQ(largest_component(flow), static_cast<float>(cv::norm(flow, cv::NORM_INF)))
+        << width;
+    flow.at<cv::Point2f>(8, width - 1).y = -75.5f;
+    EXPECT_FLOAT_EQ(largest_component(flow), 75.5f) << width;
+  }
+  EXPECT_EQ(largest_component(cv::Mat::zeros(4, 4, CV_32FC2)), 0.f);
+}
+
 TEST(CarryAlongFlow, MovesTheSilhouetteWhereItsPixelsWent) {
   cv::Mat last = cv::Mat::zeros(100, 100, CV_32F);
   last(cv::Rect(20, 30, 10, 10)).setTo(1);
