@@ -2,6 +2,7 @@
 // planar (I420), pairs (NV12) and macro-pixels (YUY2), and its luma alone from a gray frame.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
@@ -84,6 +85,34 @@ TEST(WorkImages, AGrayFrameIsItsLumaInEveryChannel) {
   cv::split(gray.bgr, channels);
   for (const cv::Mat& c : channels) EXPECT_EQ(cv::norm(c, gray.gray, cv::NORM_INF), 0);
   EXPECT_EQ(cv::norm(gray.gray, read(colour, 2).gray, cv::NORM_INF), 0);
+}
+
+// Video range read as full range: luma 16-235 and chroma 16-240 widened to 0-255 (chroma about
+// 128), then OpenCV's YCrCb to BGR; Cr and Cb each by their own value.
+TEST(WorkImages, VideoRangeIsReadAsFullRange) {
+  struct Colour {
+    std::uint8_t y, u, v;
+  };
+  for (const Colour c : {Colour{16, 128, 128}, Colour{235, 128, 128}, Colour{81, 90, 240},
+                         Colour{145, 54, 34}, Colour{41, 240, 110}}) {
+    std::vector<std::uint8_t> luma(kW * kH, c.y), u(kW * kH / 4, c.u), v(kW * kH / 4, c.v);
+    const ColorView frame{
+        ImageView(luma.data(), kW, kH, kW), ChromaView{u.data(), v.data(), kW / 2, 1, 1, 1}, {}};
+    const auto full = [](double value, double low, double span) {
+      return cv::saturate_cast<std::uint8_t>(std::lround((value - low) * 255.0 / span));
+    };
+    const std::uint8_t y = full(c.y, 16, 219);
+    const auto chroma = [](double value) {
+      return cv::saturate_cast<std::uint8_t>(std::lround(128 + (value - 128) * 255.0 / 224.0));
+    };
+    cv::Mat expected;
+    cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar(y, chroma(c.v), chroma(c.u))), expected,
+                 cv::COLOR_YCrCb2BGR);
+    const WorkImages img = read(frame, 2);
+    EXPECT_EQ(img.gray.at<std::uint8_t>(5, 7), y);
+    EXPECT_EQ(img.bgr.at<cv::Vec3b>(5, 7), expected.at<cv::Vec3b>(0, 0))
+        << int(c.y) << " " << int(c.u) << " " << int(c.v);
+  }
 }
 
 }  // namespace
