@@ -21,7 +21,10 @@ class DenseFlow {
 
  private:
   cv::Ptr<cv::DISOpticalFlow> dis_;
-  cv::Mat last_, flow_;
+  cv::Mat last_;              // the last frame as DIS read it (at half size when it was halved)
+  cv::Size last_size_;        // the last frame's own size
+  cv::Mat flow_;              // at the frame's size
+  cv::Mat half_, read_flow_;  // buffers: the frame halved, the field DIS gave
 };
 
 }  // namespace projtrack

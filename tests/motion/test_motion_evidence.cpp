@@ -43,6 +43,15 @@ TEST(DenseFlow, TinyFramesAndNewSizesGiveNoFlowAndNoException) {
   const cv::Mat tiny = texture({12, 10}, 3);
   EXPECT_FALSE(flow.compute(tiny));
   EXPECT_FALSE(flow.compute(tiny));  // DIS refuses frames this small: no flow, nothing thrown
+  // Too small to halve, large enough to read whole; then one that is halved, odd-sized.
+  for (const cv::Size size : {cv::Size(28, 20), cv::Size(65, 33)}) {
+    const cv::Mat a = texture(size, 5);
+    flow.compute(a);
+    ASSERT_TRUE(flow.compute(shifted(a, 1, 0))) << size;
+    EXPECT_EQ(flow.backward().size(), size);
+    EXPECT_EQ(flow.backward().type(), CV_32FC2);
+  }
+  flow.reset();
   // Sizes that change back and forth, with a reset between (a new track): each comparable pair
   // gives a flow (a reused DIS once crashed here).
   for (const cv::Size size : {cv::Size(320, 240), cv::Size(160, 120), cv::Size(320, 240)}) {
