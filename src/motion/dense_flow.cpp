@@ -30,8 +30,10 @@ bool DenseFlow::compute(const cv::Mat& gray) {
       if (halve) {
         // To the frame's size, as DIS itself brings its finest level's field up.
         cv::resize(read_flow_, flow_, gray.size(), 0, 0, cv::INTER_LINEAR);
-        flow_ = flow_.mul(cv::Scalar(static_cast<double>(gray.cols) / read.cols,
-                                     static_cast<double>(gray.rows) / read.rows));
+        cv::multiply(flow_,
+                     cv::Scalar(static_cast<double>(gray.cols) / read.cols,
+                                static_cast<double>(gray.rows) / read.rows),
+                     flow_);
       } else {
         cv::swap(flow_, read_flow_);
       }
