@@ -12,6 +12,11 @@ struct FlowModelParams {
   // The working scale makes the frame about this many work pixels (an integer scale: 854×480 and
   // 640×480 are read at half size, 1080p at a fifth).
   double work_pixels = 100000;
+  // The picture's motion is measured at the coarsest level of DIS's pyramid (no coarser than its
+  // ultrafast preset's, a quarter of the working frame) at which the object still spans this
+  // many pixels (√area): a smaller object is a speck there and is carried along with what
+  // surrounds it. 0: always the preset's level.
+  double flow_span = 8;
   // How far the object may have moved beyond what the flow says: the carried silhouette is
   // blurred this share of √area wide before it becomes the prior.
   double prior_spread = 0.2;
@@ -45,8 +50,8 @@ struct FlowModelParams {
 };
 
 // Empty when every member is in range (work_pixels at least 1000, prior_floor in (0, 0.5), the
-// shares, rates and weights in [0, 1], memory_fade below 1, the widths and motion_weight at least
-// 0); otherwise which one is not, and its range.
+// shares, rates and weights in [0, 1], memory_fade below 1, flow_span, the widths and motion_weight
+// at least 0); otherwise which one is not, and its range.
 std::string validate(const FlowModelParams& p);
 
 }  // namespace projtrack

@@ -5,28 +5,30 @@
 
 namespace projtrack {
 
-bool DenseFlow::compute(const cv::Mat& gray) {
-  // DIS reads the frame at half size from that size's finest level but one: the ultrafast
-  // preset's finest level of the whole frame is a quarter of it, so the field is measured at the
-  // same level from a quarter of the pixels to build pyramids from (0.3 ms less a frame at
+bool DenseFlow::compute(const cv::Mat& gray, int level) {
+  level = std::clamp(level, 0, kPresetLevel);
+  // Above level 0 DIS reads the frame halved, from the half's level below: the field is measured
+  // at the same level from a quarter of the pixels to build pyramids from (0.3 ms less a frame at
   // 427×240; davis-dev's J within a point either way). A frame too small to halve is read whole.
-  const bool halve = std::min(gray.cols, gray.rows) >= 2 * kLeastSide;
+  const bool halve = level >= 1 && std::min(gray.cols, gray.rows) >= 2 * kLeastSide;
+  const bool comparable =
+      !last_.empty() && last_.size() == gray.size() && std::min(gray.cols, gray.rows) >= kLeastSide;
+  // A new size or level: a new DIS (reset()).
+  if (!comparable || level != level_) dis_.release();
   if (halve)
     cv::resize(gray, half_, {(gray.cols + 1) / 2, (gray.rows + 1) / 2}, 0, 0, cv::INTER_AREA);
-  const cv::Mat& read = halve ? half_ : gray;
-  const bool comparable =
-      !last_.empty() && last_size_ == gray.size() && std::min(gray.cols, gray.rows) >= kLeastSide;
-  if (!comparable) dis_.release();  // a new size: a new DIS (reset())
   bool computed = false;
   if (comparable) {
     // The ultrafast preset: 0.3-1.4 ms a frame at a quarter to a half of 854×480, and the motion
     // of a whole object needs no finer field (docs/tracker.md, "The flow model").
     if (!dis_) {
       dis_ = cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST);
-      if (halve) dis_->setFinestScale(dis_->getFinestScale() - 1);
+      dis_->setFinestScale(halve ? level - 1 : level);
     }
+    if (halve && !last_halved_) cv::resize(last_, last_half_, half_.size(), 0, 0, cv::INTER_AREA);
+    const cv::Mat& read = halve ? half_ : gray;
     try {
-      dis_->calc(read, last_, read_flow_);
+      dis_->calc(read, halve ? last_half_ : last_, read_flow_);
       if (halve) {
         // To the frame's size, as DIS itself brings its finest level's field up.
         cv::resize(read_flow_, flow_, gray.size(), 0, 0, cv::INTER_LINEAR);
@@ -42,8 +44,10 @@ bool DenseFlow::compute(const cv::Mat& gray) {
       dis_.release();  // no flow on this frame: the caller says the object was not followed
     }
   }
-  read.copyTo(last_);
-  last_size_ = gray.size();
+  level_ = level;
+  gray.copyTo(last_);
+  last_halved_ = halve;
+  if (halve) cv::swap(last_half_, half_);
   return computed;
 }
 
@@ -53,8 +57,8 @@ void DenseFlow::reset() {
   // model through a new resolution and a reset).
   dis_.release();
   last_.release();
+  last_halved_ = false;
   flow_.release();
-  last_size_ = {};
 }
 
 }  // namespace projtrack

@@ -9,15 +9,35 @@
 
 namespace projtrack {
 
-void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside) {
+namespace {
+
+// The flow's pyramid level for an object of `area` work px, now read at `current`: the coarsest
+// (no coarser than DIS's preset's) at which it spans `span` px (√area), or a small object is a
+// speck there and its pixels move with what surrounds them. A coarser level is taken only where
+// it would span 1.5 × `span`, so that an object near the limit does not switch every frame.
+int flow_level(double area, int current, double span) {
+  const double across = std::sqrt(std::max(area, 0.0));
+  const auto spans = [&](int level, double least) { return across / (1 << level) >= least; };
+  int needed = DenseFlow::kPresetLevel;
+  while (needed > 0 && !spans(needed, span)) --needed;
+  if (needed <= current) return needed;
+  int level = current;
+  while (level < needed && spans(level + 1, 1.5 * span)) ++level;
+  return level;
+}
+
+}  // namespace
+
+void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p) {
   scale_ = img.scale;
   cv::compare(inside, 0, mask_, cv::CMP_GT);
   mask_.convertTo(last_, CV_32F, 1.0 / 255);
   last_.copyTo(memory_);
-  fullest_ = cv::sum(last_)[0];
+  fullest_ = area_ = cv::sum(last_)[0];
   colours_.start(img.bgr, mask_);
   flow_.reset();
-  flow_.compute(img.gray);
+  flow_level_ = flow_level(area_, DenseFlow::kPresetLevel, p.flow_span);
+  flow_.compute(img.gray, flow_level_);
 }
 
 void FlowSegmenter::forget(bool colours) {
@@ -29,7 +49,8 @@ void FlowSegmenter::forget(bool colours) {
 }
 
 bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
-  if (last_.empty() || !flow_.compute(img.gray) || img.scale != scale_) {
+  flow_level_ = flow_level(area_, flow_level_, p.flow_span);
+  if (last_.empty() || !flow_.compute(img.gray, flow_level_) || img.scale != scale_) {
     forget(false);
     return false;
   }
@@ -95,9 +116,9 @@ void FlowSegmenter::learn_colours(const WorkImages& img, const FlowModelParams& 
 }
 
 void FlowSegmenter::remember(const FlowModelParams& p) {
-  const double area = cv::sum(last_)[0];
-  fullest_ = std::max(fullest_ * (1 - p.memory_fade), area);
-  if (last_.size() != memory_.size() || area >= p.memory_refresh * fullest_) last_.copyTo(memory_);
+  area_ = cv::sum(last_)[0];
+  fullest_ = std::max(fullest_ * (1 - p.memory_fade), area_);
+  if (last_.size() != memory_.size() || area_ >= p.memory_refresh * fullest_) last_.copyTo(memory_);
 }
 
 cv::Rect FlowSegmenter::reach_of_prior(int blur) {

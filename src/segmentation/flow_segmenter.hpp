@@ -19,7 +19,7 @@ namespace projtrack {
 class FlowSegmenter {
  public:
   // A new object: `inside` (CV_8U at the work size, non-zero on the object) on `img`.
-  void start(const WorkImages& img, const cv::Mat& inside);
+  void start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p);
   // The object on the next frame. False when nothing of it is left (or the frame's size changed):
   // the silhouette is then empty.
   bool follow(const WorkImages& img, const FlowModelParams& p);
@@ -47,8 +47,10 @@ class FlowSegmenter {
   void keep_pieces_on_prior(double keep_share);
 
   DenseFlow flow_;
+  int flow_level_ = DenseFlow::kPresetLevel;  // the flow's pyramid level for this object
   ColourMixture colours_;
   int scale_ = 1;
+  double area_ = 0;     // the last silhouette's, work px
   cv::Mat last_;        // the last silhouette, CV_32F 0 or 1
   cv::Mat mask_;        // this frame's, CV_8U 0 or 255
   cv::Mat memory_;      // the fullest recent silhouette, CV_32F, moved with the object

@@ -106,7 +106,7 @@ TrackResult Tracker::Impl::start_flow(const ColorView& frame, EdgeSource& edges,
   const bool seeded = state.track().inner.has_value();
   AppearanceStart start = first_flow_silhouette(frame, edges, in);
   if (start.found) {
-    state.flow.start(work.images, work.inside);
+    state.flow.start(work.images, work.inside, in.tp.flow);
     const Features f = estimate_flow_silhouette(frame, in);
     if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
       state.flow.forget(false);

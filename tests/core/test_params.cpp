@@ -148,6 +148,7 @@ TEST(FlowModelParams, EveryMemberOutOfItsRangeIsNamed) {
     double bad;
   };
   const Case cases[] = {{"work_pixels", &FlowModelParams::work_pixels, 999},
+                        {"flow_span", &FlowModelParams::flow_span, -1},
                         {"prior_spread", &FlowModelParams::prior_spread, -0.1},
                         {"prior_floor", &FlowModelParams::prior_floor, 0.5},
                         {"learning_rate", &FlowModelParams::learning_rate, 1.5},

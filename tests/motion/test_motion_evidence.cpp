@@ -38,6 +38,20 @@ TEST(DenseFlow, ReadsAWholePictureMoveAsTheMoveBack) {
   EXPECT_FALSE(flow.compute(texture({160, 120}, 2)));  // a new size: no flow
 }
 
+TEST(DenseFlow, EveryLevelReadsTheMoveAndALevelMayChangeBetweenFrames) {
+  const cv::Mat first = texture({320, 240}, 1);
+  DenseFlow flow;
+  flow.compute(first, 2);
+  int dx = 0;
+  for (const int level : {2, 1, 0, 2, 0, 1}) {
+    dx += 2;
+    ASSERT_TRUE(flow.compute(shifted(first, dx, 0), level)) << level;
+    const cv::Scalar mean = cv::mean(flow.backward()(cv::Rect(40, 40, 240, 160)));
+    EXPECT_NEAR(mean[0], -2, 0.5) << level;
+    EXPECT_NEAR(mean[1], 0, 0.5) << level;
+  }
+}
+
 TEST(DenseFlow, TinyFramesAndNewSizesGiveNoFlowAndNoException) {
   DenseFlow flow;
   const cv::Mat tiny = texture({12, 10}, 3);
