@@ -82,31 +82,40 @@ TEST(FlowSegmenter, FollowsAnObjectOfSeveralColoursAcrossAPanningBackground) {
   EXPECT_LT(iou(first, truth), 0.1);
 }
 
+// Frames 0 .. `last` of a scene, `frame_at(t, bgr, truth)`, started from the truth on frame 0
+// and followed: the last frame's overlap with the truth, 0 once lost.
+template <class FrameAt>
+double last_overlap(const FlowModelParams& p, int last, FrameAt frame_at) {
+  FlowSegmenter segmenter;
+  double overlap = 0;
+  for (int t = 0; t <= last; ++t) {
+    cv::Mat bgr, truth;
+    frame_at(t, bgr, truth);
+    if (t == 0) {
+      segmenter.start(images_of(bgr), truth, p);
+      continue;
+    }
+    if (!segmenter.follow(images_of(bgr), p)) return 0;
+    overlap = iou(segmenter.silhouette(), truth);
+  }
+  return overlap;
+}
+
 // A textured reddish disc moving right behind a thin grey pole: what passes behind the pole must
 // be found again when it comes out (the remembered silhouette), where the pole's own flow would
 // carry it away.
 double behind_a_pole(const FlowModelParams& p) {
   const Scene scene;
-  FlowSegmenter segmenter;
-  double last_iou = 0;
-  for (int t = 0; t <= 36; ++t) {
-    cv::Mat bgr = scene.background(cv::Rect(0, 0, 320, 240)).clone(), visible;
-    cv::Mat disc = cv::Mat::zeros(240, 320, CV_8U);
-    cv::circle(disc, {70 + 4 * t, 120}, 35, 255, cv::FILLED);
+  return last_overlap(p, 36, [&](int t, cv::Mat& bgr, cv::Mat& visible) {
+    bgr = scene.background(cv::Rect(0, 0, 320, 240)).clone();
+    visible = cv::Mat::zeros(240, 320, CV_8U);
+    cv::circle(visible, {70 + 4 * t, 120}, 35, 255, cv::FILLED);
     cv::Mat own;
     cv::add(scene.background(cv::Rect(200 - 4 * t, 100, 320, 240)), cv::Scalar(0, 0, 90), own);
-    own.copyTo(bgr, disc);
+    own.copyTo(bgr, visible);
     bgr(cv::Rect(150, 0, 12, 240)).setTo(cv::Scalar(200, 200, 200));  // the pole, in front
-    disc.copyTo(visible);
     visible(cv::Rect(150, 0, 12, 240)).setTo(0);
-    if (t == 0) {
-      segmenter.start(images_of(bgr), visible, FlowModelParams{});
-      continue;
-    }
-    if (!segmenter.follow(images_of(bgr), p)) return 0;
-    last_iou = iou(segmenter.silhouette(), visible);
-  }
-  return last_iou;
+  });
 }
 
 TEST(FlowSegmenter, FindsAgainWhatPassedBehindAPole) {
@@ -118,25 +127,15 @@ TEST(FlowSegmenter, FindsAgainWhatPassedBehindAPole) {
 
 // A small disc (20 px across) of the background's own colours and texture moving right and down
 // while the camera pans left: only its motion tells it apart, and at the flow preset's level, a
-// quarter of the frame's size, it is a speck moving with its surroundings. Returns the last
-// frame's overlap with the truth (0 once lost).
+// quarter of the frame's size, it is a speck moving with its surroundings.
 double small_and_moving(const FlowModelParams& p) {
   const Scene scene;
-  FlowSegmenter segmenter;
-  double last_iou = 0;
-  for (int t = 0; t <= 20; ++t) {
-    cv::Mat bgr = scene.background(cv::Rect(t, 20, 320, 240)).clone();  // the camera pans
-    cv::Mat disc = cv::Mat::zeros(240, 320, CV_8U);
+  return last_overlap(p, 20, [&](int t, cv::Mat& bgr, cv::Mat& disc) {
+    bgr = scene.background(cv::Rect(t, 20, 320, 240)).clone();  // the camera pans
+    disc = cv::Mat::zeros(240, 320, CV_8U);
     cv::circle(disc, {120 + 3 * t, 100 + t}, 10, 255, cv::FILLED);
     scene.background(cv::Rect(140 - 3 * t, 60 - t, 320, 240)).copyTo(bgr, disc);
-    if (t == 0) {
-      segmenter.start(images_of(bgr), disc, p);
-      continue;
-    }
-    if (!segmenter.follow(images_of(bgr), p)) return 0;
-    last_iou = iou(segmenter.silhouette(), disc);
-  }
-  return last_iou;
+  });
 }
 
 TEST(FlowSegmenter, ASmallObjectsMotionIsReadAtALevelItSpans) {
