@@ -173,6 +173,24 @@ TEST(ObjectInBox, GrabCutTakesTheObjectNotTheBox) {
   EXPECT_GT(cv::countNonZero(inside), 0);
 }
 
+TEST(ObjectInBox, TheBoxsCornersAreNotTheObject) {
+  // A red disc in a box whose corners hold blue marks seen nowhere else: the box's surroundings
+  // in its corners (a kite's lines), not part of the object.
+  const Scene scene;
+  cv::Mat bgr = scene.background(cv::Rect(0, 0, 320, 240)).clone();
+  cv::Mat disc = cv::Mat::zeros(240, 320, CV_8U);
+  cv::circle(disc, {160, 120}, 40, 255, cv::FILLED);
+  bgr.setTo(cv::Scalar(40, 40, 200), disc);
+  const cv::Rect b(118, 78, 85, 85);
+  for (const cv::Point corner : {b.tl(), cv::Point(b.br().x - 12, b.y),
+                                 cv::Point(b.x, b.br().y - 12), b.br() - cv::Point(12, 12)})
+    cv::rectangle(bgr, cv::Rect(corner, cv::Size(12, 12)), cv::Scalar(200, 60, 30), cv::FILLED);
+  cv::Mat inside;
+  ASSERT_EQ(object_in_box(images_of(bgr), {b.x, b.y, b.width, b.height}, inside), BoxStart::Cut);
+  EXPECT_GT(iou(inside, disc), 0.9);
+  EXPECT_LT(cv::countNonZero(inside(cv::Rect(b.tl(), cv::Size(12, 12)))), 10);
+}
+
 TEST(ColourMixture, FollowsTheSurroundingsOnlyWhereTheRingIs) {
   // Red object, a green ring around it, blue far away: followed with the ring alone as the
   // surroundings, green is what the object is told from and blue, never seen near it, says
