@@ -19,8 +19,9 @@ bool DenseFlow::compute(const cv::Mat& gray, int level) {
     cv::resize(gray, half_, {(gray.cols + 1) / 2, (gray.rows + 1) / 2}, 0, 0, cv::INTER_AREA);
   bool computed = false;
   if (comparable) {
-    // The ultrafast preset: 0.3-1.4 ms a frame at a quarter to a half of 854×480, and the motion
-    // of a whole object needs no finer field (docs/tracker.md, "The flow model").
+    // The ultrafast preset's patches and iterations, down to the level asked: 0.3-1.4 ms a frame
+    // at its own level, a quarter to a half of 854×480; a finer level is asked for a small object
+    // only (docs/tracker.md, "The flow model").
     if (!dis_) {
       dis_ = cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST);
       dis_->setFinestScale(halve ? level - 1 : level);
