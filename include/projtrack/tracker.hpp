@@ -92,9 +92,10 @@ class Tracker {
   SilhouetteMask silhouette() const;
   // The frames change size, from width × height to new_width × new_height (a new resolution):
   // the inner point, the user's box and the last estimate are scaled (depth, the object's share
-  // of the frame, needs no scaling), and the appearance model finds the object again within its
-  // scaled box on the next frame, learning its colours anew there. The track goes on: no new
-  // acquisition, depth goes on.
+  // of the frame, needs no scaling); the appearance model's silhouette follows and its colours
+  // stay (the flow model starts again within the scaled box). The track goes on: no new
+  // acquisition, depth goes on; the centroid's step across the change is no velocity (the
+  // stream may have been cut there).
   void rescale(int width, int height, int new_width, int new_height);
   // The frames' colours are read another way (another pixel format, same size): the appearance
   // model learns the object's colours anew within its last box on the next frame (those learned

@@ -44,6 +44,19 @@ void SilhouetteModel::forget() {
   silhouette_.reset({});
 }
 
+void SilhouetteModel::rescale(double sx, double sy) {
+  if (!(sx > 0 && sy > 0 && std::isfinite(sx) && std::isfinite(sy))) return;
+  // As many work pixels as before: the object's size in them is what its parameters are for.
+  const double to = std::round(scale_ * std::sqrt(sx * sy));
+  const int scale = static_cast<int>(std::clamp(to, 1.0, 1e6));
+  if (tracking()) {
+    resample(silhouette_, scale_, sx, sy, scale, prior_);
+    silhouette_.swap(prior_);
+    if (moments(silhouette_).area <= 0) silhouette_.reset({});
+  }
+  scale_ = scale;
+}
+
 Point2i SilhouetteModel::to_work(Point2i p) const {
   const auto down = [&](int v) { return v >= 0 ? v / scale_ : -((-v + scale_ - 1) / scale_); };
   return {down(p.x), down(p.y)};
@@ -200,7 +213,7 @@ bool SilhouetteModel::start(const ColorView& frame, EdgeSource& edges, const Mas
   const double frame_area = moments(first).area * first_scale * first_scale;
   if (frame_area <= 0) return false;
   scale_ = work_scale(frame_area, p.work_pixels);
-  rescale(first, first_scale, scale_, prior_);
+  projtrack::rescale(first, first_scale, scale_, prior_);
   const MaskMoments m0 = moments(prior_);
   if (m0.area <= 0) return false;
   Point2i seed = to_work(seed_pixel);
@@ -260,7 +273,7 @@ bool SilhouetteModel::resume(const ColorView& frame, EdgeSource& edges, const Ma
   const double frame_area = moments(first).area * first_scale * first_scale;
   if (frame_area <= 0 || !knows_colours()) return false;
   scale_ = work_scale(frame_area, p.work_pixels);
-  rescale(first, first_scale, scale_, prior_);
+  projtrack::rescale(first, first_scale, scale_, prior_);
   const MaskMoments m = moments(prior_);
   const int reach = at_least(2 * p.reach, m.area, 2);
   load(frame, m.bbox, margin_for(m, reach, p), m.area, true, p);

@@ -24,6 +24,9 @@ class SilhouetteModel {
   void forget();
   // Forgets where the object is, keeps its colours (to find it again).
   void forget_position() { silhouette_.reset({}); }
+  // The frame was resized by sx × sy: the silhouette follows at a work scale as much larger, its
+  // colours stay (a resize changes no colour).
+  void rescale(double sx, double sy);
   bool tracking() const { return !silhouette_.empty(); }
   bool knows_colours() const { return !appearance_.empty(); }
   int scale() const { return scale_; }

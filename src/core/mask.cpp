@@ -1,6 +1,7 @@
 #include "core/mask.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/byte_words.hpp"
 #include "core/vector_clones.hpp"
@@ -112,6 +113,29 @@ void rescale(const Mask& src, int from, int to, Mask& dst) {
     std::uint8_t* d = dst.row(y - y0);
     for (int x = x0; x < x1; ++x)
       d[x - x0] = src.at({static_cast<int>(down(1LL * x * to + to / 2, from)), sy});
+  }
+}
+
+void resample(const Mask& src, int from, double sx, double sy, int to, Mask& dst) {
+  from = std::max(1, from);
+  to = std::max(1, to);
+  if (!(sx > 0 && sy > 0 && std::isfinite(sx) && std::isfinite(sy)) || src.empty()) {
+    dst.reset({});
+    return;
+  }
+  // Work pixel v at scale s covers frame pixels [v·s, (v+1)·s).
+  const Rect& r = src.rect();
+  const double kx = sx * from / to, ky = sy * from / to;  // src work px → dst work px
+  const int x0 = static_cast<int>(std::floor(r.x * kx)),
+            y0 = static_cast<int>(std::floor(r.y * ky));
+  const int x1 = static_cast<int>(std::ceil(r.right() * kx));
+  const int y1 = static_cast<int>(std::ceil(r.bottom() * ky));
+  dst.reset({x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)});
+  for (int y = dst.rect().y; y < dst.rect().bottom(); ++y) {
+    const int from_y = static_cast<int>(std::floor((y + 0.5) / ky));
+    std::uint8_t* d = dst.row(y - dst.rect().y);
+    for (int x = dst.rect().x; x < dst.rect().right(); ++x)
+      d[x - dst.rect().x] = src.at({static_cast<int>(std::floor((x + 0.5) / kx)), from_y});
   }
 }
 

@@ -59,6 +59,11 @@ void embed(const Mask& src, const Rect& r, Mask& dst);
 // takes the value of the `from` pixel under its centre.
 void rescale(const Mask& src, int from, int to, Mask& dst);
 
+// `src`, a mask in work coordinates at scale `from` of a frame since resized by `sx` × `sy`, in
+// work coordinates at scale `to` of the resized frame: each pixel takes the value of the `src`
+// pixel under its centre.
+void resample(const Mask& src, int from, double sx, double sy, int to, Mask& dst);
+
 // The operations, with their scratch buffers (one instance per stream).
 class MaskOps {
  public:

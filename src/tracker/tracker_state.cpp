@@ -80,9 +80,10 @@ bool TrackerState::accept(const Features& f, bool resumed, double t, int width, 
     k.still = 0;
     pointer.restart();  // depth needs no reference: one rule however the track (re)starts
   }
-  k.velocity = k.last
+  k.velocity = k.last && !k.across_change
                    ? Point2d{f.centroid.x - k.last->centroid.x, f.centroid.y - k.last->centroid.y}
                    : Point2d{0, 0};
+  k.across_change = false;
   k.inner = f.inner_point;
   k.seed_box.reset();
   k.seed_mask.release();
@@ -139,11 +140,24 @@ void TrackerState::rescale(double sx, double sy) {
     f.inner_point = scaled(f.inner_point, sx, sy);
   }
   t.velocity = {t.velocity.x * sx, t.velocity.y * sy};
+  t.across_change = true;
   t.lost_area *= sx * sy;
   t.lost_centroid = scaled(t.lost_centroid, sx, sy);
   // Depth, √(area ÷ the frame's area), needs no rescaling.
   edges_acquisition.reset();
-  relearn();
+  // The appearance model's silhouette follows and its colours stay: the next frame goes on as
+  // any other (a relearn within the last box would learn the background there when the picture
+  // changed with the size, as a clip joined to another). Without a silhouette to follow, a track
+  // relearns within its box.
+  if (model_ != ObjectModelKind::Appearance || (t.last && !object.tracking())) {
+    relearn();
+    return;
+  }
+  object.rescale(sx, sy);
+  flow.forget();
+  motion.reset();
+  moved = {};
+  moved_before = {};
 }
 
 void TrackerState::relearn() {
@@ -151,6 +165,7 @@ void TrackerState::relearn() {
   // against the frame's border, as from a user's box; the last estimate, kept, makes it no new
   // track (accept()).
   if (track_.last && !track_.seed_box) track_.seed_box = track_.last->bbox;
+  track_.across_change = true;
   object.forget();
   flow.forget();
   motion.reset();

@@ -30,11 +30,14 @@ class TrackerState {
     cv::Mat seed_mask;             // the user's mask (frame size), until the track starts from it
     std::optional<Features> last;  // the last accepted estimate
     Point2d velocity;              // of the centroid between the last two accepted frames, px
-    int accepted = 0;              // frames accepted since the track started
-    int refused_in_a_row = 0;      // refused frames since the last accepted one
-    std::uint32_t refusals = 0;    // a bit per frame since the track started, newest lowest
-    bool seeded = false;           // the track started from the user's point or box
-    int still = 0;                 // frames in a row the object looked like the background
+    // The frames changed size or format since the last accepted one: the stream may have been
+    // cut there (a clip joined to another), so the centroid's step across it is no velocity.
+    bool across_change = false;
+    int accepted = 0;            // frames accepted since the track started
+    int refused_in_a_row = 0;    // refused frames since the last accepted one
+    std::uint32_t refusals = 0;  // a bit per frame since the track started, newest lowest
+    bool seeded = false;         // the track started from the user's point or box
+    int still = 0;               // frames in a row the object looked like the background
     // The object when its last track was dropped: found again by its colours near there.
     double lost_area = 0;
     Point2d lost_centroid;
@@ -81,8 +84,9 @@ class TrackerState {
   void forget_still() { track_.still = 0; }
   // The colours of an object lost long ago: acquisition looks for any object again.
   void forget_colours();
-  // The frames are now sx × sy times as large: the track's points, boxes and areas follow; the
-  // object is found again within its box (relearn()).
+  // The frames are now sx × sy times as large: the track's points, boxes and areas follow, and
+  // the appearance model's silhouette with its colours; the flow model's object is found again
+  // within its box (relearn()).
   void rescale(double sx, double sy);
   // The frames' colours are read another way: the object model forgets its colours and silhouette
   // and starts again within the last box on the next frame; the track (its last estimate, its

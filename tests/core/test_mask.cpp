@@ -175,6 +175,25 @@ TEST(Mask, RescaleKeepsTheShape) {
   EXPECT_EQ(cv::countNonZero(to_mat(back) != m), 0);
 }
 
+// A silhouette at work scale 2 of a frame resized by 3 × 1.5, at work scale 3 of the new frame:
+// 2 × 1 times as many work pixels, at the same place in the frame.
+TEST(Mask, ResampleFollowsAResizedFrame) {
+  cv::Mat m(30, 40, CV_8U, cv::Scalar(0));
+  cv::circle(m, {20, 15}, 10, cv::Scalar(1), cv::FILLED);
+  const Mask at2 = to_mask(m, {3, 4});
+  Mask out;
+  resample(at2, 2, 3.0, 1.5, 3, out);
+  EXPECT_EQ(out.rect(), (Rect{6, 4, 80, 30}));  // frame px [6, 86) × [8, 68), ×3 × 1.5, ÷3
+  const MaskMoments a = moments(at2), b = moments(out);
+  EXPECT_NEAR(b.area, 2 * a.area, 0.03 * 2 * a.area);
+  EXPECT_NEAR((b.centroid.x + 0.5) * 3, (a.centroid.x + 0.5) * 2 * 3, 1.5);
+  EXPECT_NEAR((b.centroid.y + 0.5) * 3, (a.centroid.y + 0.5) * 2 * 1.5, 1.5);
+  resample(at2, 2, 0.0, 1.0, 1, out);
+  EXPECT_TRUE(out.empty()) << "a resize to nothing leaves nothing";
+  resample(at2, 2, std::nan(""), 1.0, 1, out);
+  EXPECT_TRUE(out.empty());
+}
+
 TEST(SilhouettePieces, ANeckSplitsTwoBlobsAndEveryPixelBelongsToOne) {
   cv::Mat m(40, 90, CV_8U, cv::Scalar(0));
   cv::circle(m, {20, 20}, 15, cv::Scalar(1), cv::FILLED);

@@ -4,7 +4,9 @@ opencv-doc's cup, decoded once with OpenCV, through `appsrc ! projtrack ! fakesi
 then GRAY8 or another size, as a source renegotiating) and through projtrack.Tracker (BGR numpy
 frames, then gray ones or another size), both started from the same box on the first frame. Every
 frame's status, centroid and area are compared, through a size change (640x480 -> 320x240 at
-frame 20) and a format change (BGR -> gray at frame 20). Exit status 77 (skipped) without the clip
+frame 20), a format change (BGR -> gray at frame 20) and a clip joined to itself at half its size
+after all its frames (the picture jumps back as the size changes: the cup is where it was on frame
+0). Exit status 77 (skipped) without the clip
 (opencv-doc) or the element."""
 import gzip
 import os
@@ -30,6 +32,7 @@ FPS = 30
 # 0, or after 20 or 40 colour frames; the hand turns it and luma alone no longer holds it): the
 # track after the format change is judged before that.
 GRAY_HOLDS = 51
+JOINED = 30
 
 
 def cup_frames(n):
@@ -48,12 +51,20 @@ def cup_frames(n):
     return frames
 
 
+def half(f):
+    return cv2.resize(f, (f.shape[1] // 2, f.shape[0] // 2), interpolation=cv2.INTER_AREA)
+
+
 def scenario(frames, change):
-    """The frames each side is given: (numpy frame, GStreamer format), `change` from CHANGE on."""
+    """The frames each side is given: (numpy frame, GStreamer format), `change` from CHANGE on
+    (for 'joined': the frames, then their first JOINED halved)."""
+    if change == 'joined':
+        return [(np.ascontiguousarray(f), 'BGR') for f in frames] + \
+            [(np.ascontiguousarray(half(f)), 'BGR') for f in frames[:JOINED]]
     out = []
     for i, f in enumerate(frames):
         if i >= CHANGE and change == 'size':
-            f = cv2.resize(f, (f.shape[1] // 2, f.shape[0] // 2), interpolation=cv2.INTER_AREA)
+            f = half(f)
         if i >= CHANGE and change == 'format':
             out.append((np.ascontiguousarray(cv2.cvtColor(f, cv2.COLOR_BGR2GRAY)), 'GRAY8'))
         else:
@@ -142,11 +153,12 @@ def main():
         return 77
     frames = cup_frames(FRAMES)
     failures = []
-    for change in ('size', 'format'):
+    for change in ('size', 'format', 'joined'):
         given = scenario(frames, change)
         element, python = run_element(given), run_python(given)
         failures += compare(change, element, python)
-        after = [r[0] for r in python[CHANGE:GRAY_HOLDS if change == 'format' else None]]
+        first = FRAMES if change == 'joined' else CHANGE
+        after = [r[0] for r in python[first:GRAY_HOLDS if change == 'format' else None]]
         ok = after.count('ok')
         print(f'{change}: {ok} of {len(after)} frames ok after the change; '
               f'{sum(e[0] == p[0] for e, p in zip(element, python))} statuses agree')

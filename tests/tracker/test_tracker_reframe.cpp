@@ -124,6 +124,51 @@ TEST(Reframe, AResizeAtAnyFrameKeepsTheTrack) {
   }
 }
 
+// A disc moving to the right as moving_disc(), with a blue square where it was on frame `was`.
+Picture disc_beside_a_square(int i, int was, double k) {
+  cv::Mat bgr(static_cast<int>(std::lround(240 * k)), static_cast<int>(std::lround(360 * k)),
+              CV_8UC3, cv::Scalar(90, 120, 100));
+  const double x = (120 + 1.5 * was) * k, y = 120 * k, r = 40 * k;
+  cv::rectangle(bgr, cv::Rect2d(x, y - r, r, 2 * r), cv::Scalar(200, 70, 40), cv::FILLED);
+  cv::circle(bgr,
+             {static_cast<int>(std::lround((120 + 1.5 * i) * k * 16)),
+              static_cast<int>(std::lround(y * 16))},
+             static_cast<int>(std::lround(r * 16)), cv::Scalar(40, 60, 200), cv::FILLED,
+             cv::LINE_AA, 4);
+  Picture p{cv::Mat(), bgr.cols, bgr.rows};
+  cv::cvtColor(bgr, p.i420, cv::COLOR_BGR2YUV_I420);
+  return p;
+}
+
+// A resize as the picture jumps back (a clip joined to another at another size): the disc, back
+// by most of its radius, is found where it now is and followed on, a blue square where it was not
+// taken. (The cup clip joined to itself, tests/python/test_parity.py, is the case a relearn within
+// the last box lost.)
+TEST(Reframe, AResizeWithAJumpInThePictureKeepsTheTrack) {
+  const TrackerParams tp = manual();
+  const int was = 25;
+  for (const double k : {0.5, 2.0}) {
+    SCOPED_TRACE("x" + std::to_string(k));
+    Tracker t;
+    t.seed({120, 120});
+    TrackResult r;
+    for (int i = 0; i < was; ++i) r = track(t, moving_disc(i, 1), i / 30.0, tp);
+    ASSERT_EQ(r.status, TrackStatus::Ok) << r.detail;
+    const double area = r.features.area * k * k;
+    const Picture p = disc_beside_a_square(0, was, k);
+    t.rescale(360, 240, p.w, p.h);
+    int ok = 0;
+    for (int i = 0; i < 20; ++i) {
+      r = track(t, disc_beside_a_square(i, was, k), 2 + i / 30.0, tp);
+      if (r.status != TrackStatus::Ok) continue;
+      ++ok;
+      EXPECT_NEAR(r.features.area, area, 0.25 * area) << "frame " << i;
+      EXPECT_NEAR(r.features.centroid.x, (120 + 1.5 * i) * k, 2 * k + 1) << "frame " << i;
+    }
+    EXPECT_GE(ok, 18) << r.detail;
+  }
+}
+
 // The start within the box after a rescale continues the track: a sliver of the object there (a
 // hand over all but a spot of it) is refused rather than taken as the track's size, which every
 // next frame's estimate would then "jump" from, losing the object for good.
