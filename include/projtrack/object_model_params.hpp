@@ -37,6 +37,10 @@ struct ObjectModelParams {
   // is in one. The start learns the colours only where the silhouette is thicker than that, so
   // a thin band of the hand that joined it is not learned as the object's. 0: neither.
   double arm_cut = 0.1;
+  // Started from the user's box, the object lies within the box grown by this share of its
+  // sides: the first frame's silhouette is cut there (the hand that holds the object reaches
+  // beyond the box, the object does not).
+  double box_slack = 0.1;
 };
 
 }  // namespace projtrack

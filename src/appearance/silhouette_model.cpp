@@ -208,7 +208,7 @@ void SilhouetteModel::cut_arm(Mask& s, const Mask& before, const Rect& frame, Po
 
 bool SilhouetteModel::start(const ColorView& frame, EdgeSource& edges, const Mask& first,
                             int first_scale, Point2i seed_pixel,
-                            const std::vector<std::uint32_t>& background,
+                            const std::vector<std::uint32_t>& background, const Rect& bound,
                             const ObjectModelParams& p, Mask& out) {
   const double frame_area = moments(first).area * first_scale * first_scale;
   if (frame_area <= 0) return false;
@@ -257,6 +257,11 @@ bool SilhouetteModel::start(const ColorView& frame, EdgeSource& edges, const Mas
     }
     if (round == 0) take_unknown_inside(seed, out);
     cut_arm(out, prior_, whole, seed, p);
+    if (!bound.empty()) {
+      embed(out, out.rect() & projtrack::to_work(bound, scale_), grown_);
+      out.swap(grown_);
+      if (moments(out).area <= 0) break;
+    }
     learn(learning_core(out, p), out, p.ring, 1.0, true);
     score();
     const bool grew = moments(out).area > 1.02 * m.area;

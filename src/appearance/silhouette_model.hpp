@@ -37,11 +37,12 @@ class SilhouetteModel {
   // Starts from a first silhouette `first` (work coordinates at `first_scale`) found around
   // `seed` (a frame pixel): learns the colours of its core against the colours of the frame's
   // border (`background`, counts per colour bin; empty: against a ring around `first`), then
-  // segments and learns again on this frame against a ring around it. Holds the result as the
-  // silhouette and puts it in `out`; false when nothing is left of the object.
+  // segments and learns again on this frame against a ring around it, within `bound` (frame
+  // pixels; empty: anywhere). Holds the result as the silhouette and puts it in `out`; false when
+  // nothing is left of the object.
   bool start(const ColorView& frame, EdgeSource& edges, const Mask& first, int first_scale,
-             Point2i seed, const std::vector<std::uint32_t>& background, const ObjectModelParams& p,
-             Mask& out);
+             Point2i seed, const std::vector<std::uint32_t>& background, const Rect& bound,
+             const ObjectModelParams& p, Mask& out);
   // Resumes an object found again by its colours around `first`: segments with the colours it
   // knows (learning nothing until accept()) and holds the result as the silhouette.
   bool resume(const ColorView& frame, EdgeSource& edges, const Mask& first, int first_scale,

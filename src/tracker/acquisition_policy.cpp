@@ -131,6 +131,20 @@ std::optional<Features> start_edges_track(TrackerState& s, const ImageView& gray
   return s.edges_acquisition.acquire(gray, edges, est, params, limit, tp, budget, why);
 }
 
+namespace {
+
+// Where the object of a start from the user's box lies: the box grown by
+// ObjectModelParams::box_slack of its sides (empty: no box, or a box the track goes on from).
+Rect users_box_bound(const TrackerState::Track& t, const ObjectModelParams& p) {
+  if (!t.seed_box || t.last || !(p.box_slack >= 0)) return {};
+  const Rect& b = *t.seed_box;
+  const int dx = static_cast<int>(std::ceil(p.box_slack * b.width));
+  const int dy = static_cast<int>(std::ceil(p.box_slack * b.height));
+  return {b.x - dx, b.y - dy, b.width + 2 * dx, b.height + 2 * dy};
+}
+
+}  // namespace
+
 AppearanceStart start_appearance_track(TrackerState& s, const ColorView& frame, EdgeSource& edges,
                                        const TrackerParams& tp, Mask& first, Mask& silhouette) {
   AppearanceStart out;
@@ -143,7 +157,7 @@ AppearanceStart start_appearance_track(TrackerState& s, const ColorView& frame, 
           ? s.object.resume(frame, edges, first, scale, seed, tp.object, silhouette)
           : s.object.start(frame, edges, first, scale, seed,
                            s.finder.apart_from_border() ? s.finder.border_colours() : kNoColours,
-                           tp.object, silhouette);
+                           users_box_bound(s.track(), tp.object), tp.object, silhouette);
   if (!ok) {
     out.why = "nothing of the object's colours is left around it";
     return out;

@@ -411,6 +411,42 @@ TEST(SilhouetteModel, StartsFromABoxAroundTheObject) {
   EXPECT_FALSE(w.features.valid());
 }
 
+// A dark cup held by a hand whose shadowed side is the cup's own colour: from a box around the
+// cup the first silhouette keeps within the box (ObjectModelParams::box_slack), where the colours
+// alone would take the hand's side with it.
+TEST(SilhouetteModel, AStartFromABoxKeepsWithinTheBox) {
+  constexpr int kW = 320, kH = 240;
+  cv::Mat bgr(kH, kW, CV_8UC3, cv::Scalar(205, 210, 215));  // the wall
+  const cv::Rect cup(110, 50, 60, 140), hand(170, 100, 80, 40);
+  cv::rectangle(bgr, cup, cv::Scalar(50, 45, 40), cv::FILLED);
+  cv::rectangle(bgr, hand, cv::Scalar(50, 45, 40), cv::FILLED);
+  cv::Mat i420;
+  cv::cvtColor(bgr, i420, cv::COLOR_BGR2YUV_I420);
+  const ColorView view = test::i420_view(i420, kW, kH);
+  const Rect box{cup.x - 4, cup.y - 4, cup.width + 8, cup.height + 8};  // drawn around the cup
+  for (const double slack : {0.1, 0.3}) {
+    SCOPED_TRACE("slack " + std::to_string(slack));
+    TrackerParams tp;
+    tp.object.box_slack = slack;
+    Tracker t;
+    t.seed_box(box);
+    const TrackResult r = t.track(view, EdgeParams{}, 0, Method::GapTolerantFilling, {}, tp);
+    ASSERT_TRUE(r.features.valid()) << status_name(r.status) << ": " << r.detail;
+    const int reach = box.right() + static_cast<int>(std::ceil(slack * box.width));
+    EXPECT_LE(r.features.bbox.right(), reach + 1) << "the hand beyond the box is not taken";
+    EXPECT_GE(r.features.bbox.right(), cup.x + cup.width - 1);
+    EXPECT_GE(r.features.area, 0.95 * cup.area());
+  }
+  // Without the bound the colours take the hand: what the bound is for.
+  TrackerParams unbounded;
+  unbounded.object.box_slack = 100;
+  Tracker t;
+  t.seed_box(box);
+  const TrackResult r = t.track(view, EdgeParams{}, 0, Method::GapTolerantFilling, {}, unbounded);
+  ASSERT_TRUE(r.features.valid()) << status_name(r.status) << ": " << r.detail;
+  EXPECT_GT(r.features.bbox.right(), hand.x + hand.width / 2);
+}
+
 // A printed box: a yellow frame around a picture that shows the wall's own colours, and in it a
 // small red figure. A user's point on the figure means the box: the figure is far smaller than
 // any object the finder would take, and the box's frame encloses it.
