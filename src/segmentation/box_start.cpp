@@ -9,7 +9,9 @@ namespace projtrack {
 
 namespace {
 
-constexpr int kRounds = 3;        // GrabCut's iterations: its result settles by then
+// GrabCut's iterations: its result settles by then (davis-dev from the box: 3 took libby's first
+// silhouette to 69 IoU, 5, 7 and 10 to 77; the rest the same).
+constexpr int kRounds = 5;
 constexpr double kContext = 0.5;  // the surroundings read: the box grown by this share a side
 // GrabCut has collapsed when it keeps less than this share of the box: on a thin dancer or a
 // small car in smoke it can take nothing at all (davis-dev at the working scale). The box's
