@@ -270,8 +270,10 @@ def fast_section(rows, meta):
               "- **A search reads the frame a fixed number of times.** While no object is "
               "tracked, the finder reads the whole frame at a coarse scale, and counts motion "
               "only around the regions that pass its size, border and background tests, per "
-              "coarse pixel rather than per changed sample: a frame where everything moves "
-              "(noise, a checkerboard that inverts) is the adversarial set's worst frame above.\n"
+              "coarse pixel rather than per changed sample. A frame whose changes are spread "
+              "evenly over it (fresh noise everywhere: no part of it moves apart from the rest) "
+              "is not searched for a new object at all: the motion detector's sample is all it "
+              "reads.\n"
               "- **Nothing is cleared or allocated per frame beyond what was touched**: masks are "
               "cleared only in the box the fill wrote.\n")
     return md

@@ -15,4 +15,8 @@ std::string wait_for_motion(MotionDetector& detector, const ImageView& gray,
                             const MotionDetector::Params& p, double min_motion,
                             MotionDetector::Motion& moved);
 
+// Whether `moved`'s changed samples are spread evenly over a width × height frame (fresh noise, a
+// flash): every cell of an 8 × 8 grid holds some, and none twice as many as the median cell.
+bool changed_evenly(const MotionDetector::Motion& moved, int width, int height);
+
 }  // namespace projtrack

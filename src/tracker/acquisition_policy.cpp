@@ -41,6 +41,14 @@ bool find_by_motion_or_colours(TrackerState& s, const ColorView& frame, const Tr
   out.why =
       wait_for_motion(s.motion, frame.luma, motion_params(tp, s.motion.spread()), gate, s.moved);
   if (!out.why.empty()) return false;
+  // A new object is what moves apart from the rest: changes spread evenly over the whole frame
+  // (fresh noise, a flash) show none, and looking would read the whole frame for nothing. An
+  // object whose colours are known is looked for still (sensor noise moves every part of the
+  // frame, and the object with it).
+  if (!s.object.knows_colours() && changed_evenly(s.moved, frame.luma.width, frame.luma.height)) {
+    out.why = "the whole picture changed evenly: nothing moves apart from it";
+    return false;
+  }
   if (s.object.knows_colours() && s.track().searched >= tp.forget_after)
     s.forget_colours();  // not seen for long: look for any object
   s.count_search();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "acquisition/motion_detector.hpp"
+#include "acquisition/motion_gate.hpp"
 
 namespace projtrack {
 namespace {
@@ -87,6 +88,45 @@ TEST(MotionDetector, TheSpreadOfTheSceneFromThe2ndToThe98thPercentile) {
   EXPECT_NEAR(d.spread(), 96, 3);
   d.reset();
   EXPECT_EQ(d.spread(), 0);
+}
+
+// Fresh salt noise over the whole frame changes every part of it alike: no part moves apart
+// (what automatic acquisition does not search). The same noise with a square that moves on it,
+// or a square alone, is not even. Nor is an empty frame.
+TEST(MotionGate, NoiseEverywhereChangesEvenlyAMovingSquareDoesNot) {
+  std::mt19937 rng(11);
+  const auto salt = [&](Gray& g) {
+    for (auto& v : g.pixels) v = rng() % 20 == 0 ? 255 : 60;
+  };
+  Gray a(320, 240, 60), b(320, 240, 60);
+  salt(a);
+  salt(b);
+  MotionDetector d;
+  MotionDetector::Motion m;
+  d.update(a.view(), {}, m);
+  ASSERT_TRUE(d.update(b.view(), {}, m));
+  EXPECT_TRUE(changed_evenly(m, 320, 240));
+  Gray c(320, 240, 60), e(320, 240, 60);  // fresh noise on each, and a checker that moves
+  salt(c);
+  salt(e);
+  for (int y = 100; y < 160; ++y)
+    for (int x = 150; x < 210; ++x) c.at(x, y) = (x / 4 + y / 4) % 2 ? 200 : 20;
+  for (int y = 100; y < 160; ++y)
+    for (int x = 160; x < 220; ++x) e.at(x, y) = (x / 4 + y / 4) % 2 ? 20 : 200;  // moved on
+  MotionDetector d2;
+  d2.update(c.view(), {}, m);
+  ASSERT_TRUE(d2.update(e.view(), {}, m));
+  EXPECT_FALSE(changed_evenly(m, 320, 240)) << "the moving square is denser than the noise";
+  Gray f(320, 240, 60), g(320, 240, 60);
+  for (int y = 100; y < 160; ++y)
+    for (int x = 150; x < 210; ++x) g.at(x, y) = 200;
+  MotionDetector d3;
+  d3.update(f.view(), {}, m);
+  ASSERT_TRUE(d3.update(g.view(), {}, m));
+  EXPECT_FALSE(changed_evenly(m, 320, 240)) << "a square alone";
+  m.points.clear();
+  EXPECT_FALSE(changed_evenly(m, 320, 240)) << "nothing changed";
+  EXPECT_FALSE(changed_evenly(m, 0, 0));
 }
 
 }  // namespace

@@ -21,6 +21,7 @@ namespace projtrack {
 namespace {
 
 using synthetic::adversarial_frame;
+using synthetic::Adversary;
 using synthetic::AdversaryInfo;
 using synthetic::kAdversaries;
 
@@ -257,6 +258,33 @@ cv::Mat disc(int w, int h, int dx = 0) {
   cv::Mat g(h, w, CV_8U, cv::Scalar(40));
   cv::circle(g, {w / 2 + dx, h / 2}, h / 4, cv::Scalar(220), cv::FILLED);
   return g;
+}
+
+// Automatic acquisition on fresh dots (every part of the frame changes alike) looks for nothing:
+// it says so, and does no search's work. A disc moving on fresh sensor noise still stands out and
+// is found.
+TEST(WorkBudget, AutomaticAcquisitionDoesNotSearchAFrameThatChangesEvenly) {
+  constexpr int kW = 320, kH = 240;
+  TrackerParams tp;
+  tp.acquisition = Acquisition::Auto;
+  Tracker t;
+  TrackResult r;
+  for (int i = 0; i < 4; ++i)
+    r = t.track(view(adversarial_frame(Adversary::Dots5, kW, kH, i)), EdgeParams{}, i / 30.0,
+                Method::GapTolerantFilling, Params{}, tp);
+  EXPECT_EQ(r.status, TrackStatus::Searching);
+  EXPECT_NE(r.detail.find("evenly"), std::string::npos) << r.detail;
+  Tracker found;
+  cv::RNG rng(5);
+  bool acquired = false;
+  for (int i = 0; i < 12 && !acquired; ++i) {
+    cv::Mat g = disc(kW, kH, 3 * i - 18), noise(kH, kW, CV_8U);
+    rng.fill(noise, cv::RNG::NORMAL, 0, 8);
+    cv::add(g, noise, g);
+    r = found.track(view(g), EdgeParams{}, i / 30.0, Method::GapTolerantFilling, Params{}, tp);
+    acquired = r.acquired;
+  }
+  EXPECT_TRUE(acquired) << status_name(r.status) << ": " << r.detail;
 }
 
 // An estimate the budget stopped is not a measurement: the track reports its last accepted
