@@ -45,31 +45,37 @@ void SeedRegion::distances(const ColorView& f, Point2i seed) {
       ys[k] = c.y, us[k] = c.u, vs[k] = c.v;
     }
   const Colour ref{median9(ys), median9(us), median9(vs)};
-  distance_.resize(static_cast<std::size_t>(w) * h);
-  for (int y = 0; y < h; ++y)
+  const int stride = w + 2;  // a border of one pixel: see bottlenecks()
+  distance_.assign(static_cast<std::size_t>(stride) * (h + 2), kLevels - 1);
+  for (int y = 0; y < h; ++y) {
+    std::uint8_t* d = distance_.data() + static_cast<std::size_t>(y + 1) * stride + 1;
     for (int x = 0; x < w; ++x)
-      distance_[static_cast<std::size_t>(y) * w + x] =
-          static_cast<std::uint8_t>(colour_distance(colour_at(f, x, y), ref));
+      d[x] = static_cast<std::uint8_t>(colour_distance(colour_at(f, x, y), ref));
+  }
 }
 
 void SeedRegion::bottlenecks(int w, int h, Point2i seed) {
-  bottleneck_.assign(static_cast<std::size_t>(w) * h, kLevels);  // kLevels: not reached yet
+  // On the frame with a border of one pixel that is never reached (its bottleneck 0 is no
+  // larger than any level): a pixel's four neighbours need no bounds check.
+  const int stride = w + 2;
+  bottleneck_.assign(static_cast<std::size_t>(stride) * (h + 2), 0);
+  for (int y = 0; y < h; ++y)
+    std::fill_n(bottleneck_.begin() + static_cast<std::ptrdiff_t>(y + 1) * stride + 1, w,
+                kLevels);  // kLevels: not reached yet
   buckets_.resize(kLevels);
   for (auto& b : buckets_) b.clear();
-  const std::int32_t s = seed.y * w + seed.x;
+  const std::int32_t s = (seed.y + 1) * stride + seed.x + 1;
   bottleneck_[s] = distance_[s];
   buckets_[distance_[s]].push_back(s);
+  const std::int32_t near[4] = {-1, 1, -stride, stride};
   for (int level = 0; level < kLevels; ++level) {
     auto& bucket = buckets_[level];
     while (!bucket.empty()) {  // the bucket may grow while it is emptied (the same level)
       const std::int32_t p = bucket.back();
       bucket.pop_back();
       if (bottleneck_[p] != level) continue;  // taken at a lower level already
-      const int x = p % w, y = p / w;
-      const std::int32_t near[4] = {x > 0 ? p - 1 : -1, x + 1 < w ? p + 1 : -1, y > 0 ? p - w : -1,
-                                    y + 1 < h ? p + w : -1};
-      for (std::int32_t q : near) {
-        if (q < 0) continue;
+      for (const std::int32_t d : near) {
+        const std::int32_t q = p + d;
         const int b = std::max<int>(level, distance_[q]);
         if (b < bottleneck_[q]) {
           bottleneck_[q] = static_cast<std::uint16_t>(b);
@@ -85,7 +91,7 @@ int SeedRegion::most_stable(int w, int h, double least, double most) const {
   std::array<std::uint8_t, kLevels + 1> sides{};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const int b = bottleneck_[static_cast<std::size_t>(y) * w + x];
+      const int b = bottleneck_[static_cast<std::size_t>(y + 1) * (w + 2) + x + 1];
       ++area[b];
       sides[b] |= (x == 0) | (x == w - 1) << 1 | (y == 0) << 2 | (y == h - 1) << 3;
     }
@@ -116,7 +122,7 @@ bool SeedRegion::grow(const ColorView& frame, Point2i origin, Point2i seed, doub
   out.reset({origin.x, origin.y, w, h});
   for (int y = 0; y < h; ++y) {
     std::uint8_t* o = out.row(y);
-    const std::uint16_t* b = bottleneck_.data() + static_cast<std::size_t>(y) * w;
+    const std::uint16_t* b = bottleneck_.data() + static_cast<std::size_t>(y + 1) * (w + 2) + 1;
     for (int x = 0; x < w; ++x) o[x] = b[x] <= t;
   }
   ops.fill_holes(out);

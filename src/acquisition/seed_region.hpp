@@ -30,6 +30,7 @@ class SeedRegion {
   // The tolerance of the most stable region; -1 for none.
   int most_stable(int width, int height, double least, double most) const;
 
+  // Both on the frame with a border of one pixel (row stride width + 2).
   std::vector<std::uint8_t> distance_;
   std::vector<std::uint16_t> bottleneck_;           // the tolerance each pixel joins at
   std::vector<std::vector<std::int32_t>> buckets_;  // pixels by tolerance (a bucket queue)
