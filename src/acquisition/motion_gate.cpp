@@ -15,12 +15,26 @@ constexpr double kStandsOut = 2;  // a part that moves: its cell's changes over 
 
 bool changed_evenly(const MotionDetector::Motion& moved, int width, int height) {
   if (width <= 0 || height <= 0) return false;
+  // The cells' first columns and rows; the samples come row by row, so a sample's cell is found
+  // by stepping on from the last one's (no division per sample).
+  std::array<long long, kGrid + 1> xs{}, ys{};
+  for (int k = 0; k <= kGrid; ++k) {
+    xs[static_cast<std::size_t>(k)] = (static_cast<long long>(width) * k + kGrid - 1) / kGrid;
+    ys[static_cast<std::size_t>(k)] = (static_cast<long long>(height) * k + kGrid - 1) / kGrid;
+  }
   std::array<int, kGrid * kGrid> count{};
+  int cx = 0, cy = 0, last_x = -1, last_y = -1;
   for (const Point2i& q : moved.points) {
-    const int cx = static_cast<int>(static_cast<long long>(q.x) * kGrid / width);
-    const int cy = static_cast<int>(static_cast<long long>(q.y) * kGrid / height);
-    if (cx >= 0 && cy >= 0 && cx < kGrid && cy < kGrid)
-      ++count[static_cast<std::size_t>(cy * kGrid + cx)];
+    if (q.x < 0 || q.y < 0 || q.x >= width || q.y >= height) continue;
+    if (q.y != last_y || q.x < last_x) {
+      cx = 0;
+      if (q.y < last_y) cy = 0;
+    }
+    while (q.y >= ys[static_cast<std::size_t>(cy) + 1]) ++cy;
+    while (q.x >= xs[static_cast<std::size_t>(cx) + 1]) ++cx;
+    last_x = q.x;
+    last_y = q.y;
+    ++count[static_cast<std::size_t>(cy * kGrid + cx)];
   }
   std::array<int, kGrid* kGrid> sorted = count;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());

@@ -60,7 +60,8 @@ class ObjectFinder {
                    Point2i& seed, std::string& why);
   // The moving object when no region of its own colours is (its colours are the border's too):
   // the largest blob of changed samples wholly in view that moved on the last frame too, and
-  // in it, as in a user's box, the region of the object's colours.
+  // in it, as in a user's box, the region of the object's colours. It reads the work frame
+  // from_motion() built: call it after from_motion() on the same frame.
   bool from_moving_blob(const ColorView& frame, const MotionDetector::Motion& motion,
                         const MotionDetector::Motion& before, const FinderParams& p, Mask& out,
                         Point2i& seed, std::string& why);
