@@ -2,6 +2,7 @@
 // packed format gathered into a plane.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -90,6 +91,46 @@ TEST(GrayConversion, AColourFrameIsItsLumaAndChromaWhateverItsHeight) {
         ASSERT_EQ(c.chroma.v[y * c.chroma.stride + x], v[y * cw + x]) << height;
       }
   }
+}
+
+// The same for chroma: rows long enough for the vectorised path (16 pixels of a row pair at a
+// time) and a scalar tail, odd widths and heights (a last column or row of its own), every
+// layout, in a buffer that ends with the last pixel: each block's chroma is that of its sums.
+TEST(GrayConversion, WideRowsGiveChromaOfEveryBlockInEveryLayout) {
+  struct Layout {
+    int stride, r, g, b;
+  };
+  const Layout layouts[] = {{3, 0, 1, 2}, {3, 2, 1, 0}, {4, 0, 1, 2},
+                            {4, 2, 1, 0}, {4, 1, 2, 3}, {4, 3, 2, 1}};
+  for (const Layout& l : layouts)
+    for (const int width : {33, 70, 71})
+      for (const int height : {1, 2, 3, 4}) {
+        std::vector<std::uint8_t> rgb(static_cast<std::size_t>(l.stride) * width * height);
+        for (std::size_t i = 0; i < rgb.size(); ++i)
+          rgb[i] = static_cast<std::uint8_t>(i * 53 + i / 5);
+        const int cw = (width + 1) / 2, ch = (height + 1) / 2;
+        std::vector<std::uint8_t> u(static_cast<std::size_t>(cw) * ch),
+            v(static_cast<std::size_t>(cw) * ch);
+        packed_rgb_to_chroma(&rgb[l.r], &rgb[l.g], &rgb[l.b], l.stride, l.stride * width, width,
+                             height, u.data(), v.data(), cw);
+        for (int by = 0; by < ch; ++by)
+          for (int bx = 0; bx < cw; ++bx) {
+            int sum[3] = {0, 0, 0};
+            for (int dy = 0; dy < 2; ++dy)
+              for (int dx = 0; dx < 2; ++dx) {
+                const int x = std::min(2 * bx + dx, width - 1);
+                const int y = std::min(2 * by + dy, height - 1);
+                const std::uint8_t* p = &rgb[(static_cast<std::size_t>(y) * width + x) * l.stride];
+                sum[0] += p[l.r], sum[1] += p[l.g], sum[2] += p[l.b];
+              }
+            ASSERT_EQ(u[by * cw + bx], u_of_sums(sum[0], sum[1], sum[2]))
+                << "stride " << l.stride << ", R at " << l.r << ", " << width << "x" << height
+                << ", block " << bx << "," << by;
+            ASSERT_EQ(v[by * cw + bx], v_of_sums(sum[0], sum[1], sum[2]))
+                << "stride " << l.stride << ", R at " << l.r << ", " << width << "x" << height
+                << ", block " << bx << "," << by;
+          }
+      }
 }
 
 // The chroma of every 2×2 block is its mean colour's (a last odd row or column: its own pixels'),
