@@ -8,7 +8,8 @@ namespace projtrack {
 
 namespace {
 
-constexpr int kGrid = 8;          // cells a side
+constexpr int kGrid = 8;  // cells a side
+constexpr std::size_t kCells = kGrid * kGrid;
 constexpr double kStandsOut = 2;  // a part that moves: its cell's changes over the median cell's
 
 }  // namespace
@@ -22,7 +23,7 @@ bool changed_evenly(const MotionDetector::Motion& moved, int width, int height) 
     xs[static_cast<std::size_t>(k)] = (static_cast<long long>(width) * k + kGrid - 1) / kGrid;
     ys[static_cast<std::size_t>(k)] = (static_cast<long long>(height) * k + kGrid - 1) / kGrid;
   }
-  std::array<int, kGrid * kGrid> count{};
+  std::array<int, kCells> count{};
   int cx = 0, cy = 0, last_x = -1, last_y = -1;
   for (const Point2i& q : moved.points) {
     if (q.x < 0 || q.y < 0 || q.x >= width || q.y >= height) continue;
@@ -36,7 +37,7 @@ bool changed_evenly(const MotionDetector::Motion& moved, int width, int height) 
     last_y = q.y;
     ++count[static_cast<std::size_t>(cy * kGrid + cx)];
   }
-  std::array<int, kGrid* kGrid> sorted = count;
+  std::array<int, kCells> sorted = count;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const int median = sorted[sorted.size() / 2];
   const int least = *std::min_element(count.begin(), count.end());

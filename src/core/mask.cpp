@@ -126,10 +126,9 @@ void resample(const Mask& src, int from, double sx, double sy, int to, Mask& dst
   // Work pixel v at scale s covers frame pixels [v·s, (v+1)·s).
   const Rect& r = src.rect();
   const double kx = sx * from / to, ky = sy * from / to;  // src work px → dst work px
-  const int x0 = static_cast<int>(std::floor(r.x * kx)),
-            y0 = static_cast<int>(std::floor(r.y * ky));
-  const int x1 = static_cast<int>(std::ceil(r.right() * kx));
-  const int y1 = static_cast<int>(std::ceil(r.bottom() * ky));
+  const auto to_int = [](double v) { return static_cast<int>(std::clamp(v, -1e9, 1e9)); };
+  const int x0 = to_int(std::floor(r.x * kx)), y0 = to_int(std::floor(r.y * ky));
+  const int x1 = to_int(std::ceil(r.right() * kx)), y1 = to_int(std::ceil(r.bottom() * ky));
   dst.reset({x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)});
   for (int y = dst.rect().y; y < dst.rect().bottom(); ++y) {
     const int from_y = static_cast<int>(std::floor((y + 0.5) / ky));
