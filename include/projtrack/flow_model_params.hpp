@@ -26,6 +26,12 @@ struct FlowModelParams {
   // first frame's colours in the evidence (they anchor it against drift).
   double learning_rate = 0.05;
   double first_share = 0.5;
+  // When the first silhouette is given (a mask), the colours near each part of the object count
+  // too (segmentation/local_colours): its box cut into `local_colour_cells` × as many cells, each
+  // with its own object and surroundings colours, at this weight beside the frame-wide ones. 0:
+  // none. A start the tracker cut itself (a box, a point) does not learn them.
+  double local_colour_weight = 0.5;
+  int local_colour_cells = 4;
   // The followed surroundings' colours are those of a ring this share of √area wide around the
   // silhouette (the first frame's are the whole rest of the frame): what the object must be told
   // from is what lies next to it.
@@ -50,8 +56,9 @@ struct FlowModelParams {
 };
 
 // Empty when every member is in range (work_pixels at least 1000, prior_floor in (0, 0.5), the
-// shares, rates and weights in [0, 1], memory_fade below 1, flow_span, the widths and motion_weight
-// at least 0); otherwise which one is not, and its range.
+// shares, rates and weights in [0, 1] but motion_weight in [0, 50], local_colour_cells in [1, 16],
+// memory_fade below 1, flow_span and the widths at least 0); otherwise which one is not, and its
+// range.
 std::string validate(const FlowModelParams& p);
 
 }  // namespace projtrack

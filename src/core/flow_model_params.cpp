@@ -28,6 +28,8 @@ std::string validate(const FlowModelParams& p) {
       outside("prior_floor", p.prior_floor, 0, 0.499, true),
       outside("learning_rate", p.learning_rate, 0, 1),
       outside("first_share", p.first_share, 0, 1),
+      outside("local_colour_weight", p.local_colour_weight, 0, 1),
+      outside("local_colour_cells", p.local_colour_cells, 1, 16),
       outside("colour_ring", p.colour_ring, 0, 10, true),
       outside("motion_ring", p.motion_ring, 0, 10, true),
       outside("motion_weight", p.motion_weight, 0, 50),

@@ -28,13 +28,19 @@ int flow_level(double area, int current, double span) {
 
 }  // namespace
 
-void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p) {
+void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p,
+                          bool given) {
   scale_ = img.scale;
   cv::compare(inside, 0, mask_, cv::CMP_GT);
   mask_.convertTo(last_, CV_32F, 1.0 / 255);
   last_.copyTo(memory_);
   fullest_ = area_ = cv::sum(last_)[0];
   colours_.start(img.bgr, mask_);
+  local_colours_.forget();
+  if (given && p.local_colour_weight > 0) {
+    const cv::Rect near = colour_ring(p);
+    local_colours_.learn(img.bgr, near, mask_(near), around_, p.local_colour_cells);
+  }
   flow_.reset();
   flow_level_ = flow_level(area_, DenseFlow::kPresetLevel, p.flow_span);
   flow_.compute(img.gray, flow_level_);
@@ -45,6 +51,7 @@ void FlowSegmenter::forget(bool colours) {
   last_.release();
   memory_.release();
   flow_.reset();
+  local_colours_.forget();
   if (colours) colours_.forget();
 }
 
@@ -107,12 +114,18 @@ void FlowSegmenter::predict(const FlowModelParams& p) {
   }
 }
 
-void FlowSegmenter::learn_colours(const WorkImages& img, const FlowModelParams& p) {
+cv::Rect FlowSegmenter::colour_ring(const FlowModelParams& p) {
   // The surroundings are the silhouette's square ring, as the motion's.
   const double area = cv::countNonZero(mask_);
   const int r = std::max(1, static_cast<int>(p.colour_ring * std::sqrt(area)));
-  const cv::Rect near = square_ring(mask_, r, ring_count_, around_);
+  return square_ring(mask_, r, ring_count_, around_);
+}
+
+void FlowSegmenter::learn_colours(const WorkImages& img, const FlowModelParams& p) {
+  const cv::Rect near = colour_ring(p);
   colours_.learn(img.bgr(near), mask_(near), around_, p.learning_rate);
+  if (local_colours_.learned())
+    local_colours_.learn(img.bgr, near, mask_(near), around_, p.local_colour_cells);
 }
 
 void FlowSegmenter::remember(const FlowModelParams& p) {
@@ -142,6 +155,9 @@ void FlowSegmenter::weigh_evidence(const WorkImages& img, int blur, const FlowMo
     for (int x = 0; x < odds.cols; ++x) l[x] = prior_log_odds_(l[x]);
   }
   colours_.add_evidence(img.bgr(reach_), p.first_share, odds);
+  // The cells moved with the object (the backward flow's opposite).
+  local_colours_.add_evidence(img.bgr, reach_, split_.valid ? -split_.object : cv::Point2f(),
+                              p.local_colour_weight, odds);
   add_motion_evidence(flow_.backward()(reach_), split_, p.motion_weight, p.min_separation, odds);
 }
 

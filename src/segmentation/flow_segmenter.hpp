@@ -11,6 +11,7 @@
 #include "motion/motion_evidence.hpp"
 #include "projtrack/flow_model_params.hpp"
 #include "segmentation/colour_mixture.hpp"
+#include "segmentation/local_colours.hpp"
 #include "segmentation/log_odds_table.hpp"
 #include "segmentation/work_images.hpp"
 
@@ -18,8 +19,11 @@ namespace projtrack {
 
 class FlowSegmenter {
  public:
-  // A new object: `inside` (CV_8U at the work size, non-zero on the object) on `img`.
-  void start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p);
+  // A new object: `inside` (CV_8U at the work size, non-zero on the object) on `img`. `given`:
+  // the silhouette is the user's (a mask), not the tracker's own cut, and the colours near each
+  // part of it are learned too (LocalColours): learned from a cut that took in background, they
+  // would hold that background as the object's.
+  void start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p, bool given);
   // The object on the next frame. False when nothing of it is left (or the frame's size changed):
   // the silhouette is then empty.
   bool follow(const WorkImages& img, const FlowModelParams& p);
@@ -41,6 +45,8 @@ class FlowSegmenter {
   void weigh_evidence(const WorkImages& img, int blur, const FlowModelParams& p);
   // Follows the colours of the silhouette and of a ring around it.
   void learn_colours(const WorkImages& img, const FlowModelParams& p);
+  // The silhouette's square ring (`colour_ring` × √area wide) into `around_`; its box returned.
+  cv::Rect colour_ring(const FlowModelParams& p);
   // Keeps the silhouette as the remembered one when it is about as full as the fullest recent.
   void remember(const FlowModelParams& p);
   // Keeps the pieces of the thresholded posterior that hold enough of the prior.
@@ -49,6 +55,7 @@ class FlowSegmenter {
   DenseFlow flow_;
   int flow_level_ = DenseFlow::kPresetLevel;  // the flow's pyramid level for this object
   ColourMixture colours_;
+  LocalColours local_colours_;  // learned only from a given silhouette, then followed
   int scale_ = 1;
   double area_ = 0;     // the last silhouette's, work px
   cv::Mat last_;        // the last silhouette, CV_32F 0 or 1

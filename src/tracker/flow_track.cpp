@@ -104,9 +104,10 @@ TrackResult Tracker::Impl::start_flow(const ColorView& frame, EdgeSource& edges,
   TrackResult r;
   const int w = frame.luma.width, h = frame.luma.height;
   const bool seeded = state.track().inner.has_value();
+  const bool given = !state.track().seed_mask.empty();
   AppearanceStart start = first_flow_silhouette(frame, edges, in);
   if (start.found) {
-    state.flow.start(work.images, work.inside, in.tp.flow);
+    state.flow.start(work.images, work.inside, in.tp.flow, given);
     const Features f = estimate_flow_silhouette(frame, in);
     if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
       state.flow.forget(false);

@@ -153,6 +153,7 @@ TEST(FlowModelParams, EveryMemberOutOfItsRangeIsNamed) {
                         {"prior_floor", &FlowModelParams::prior_floor, 0.5},
                         {"learning_rate", &FlowModelParams::learning_rate, 1.5},
                         {"first_share", &FlowModelParams::first_share, -1},
+                        {"local_colour_weight", &FlowModelParams::local_colour_weight, 1.5},
                         {"colour_ring", &FlowModelParams::colour_ring, 0},
                         {"motion_ring", &FlowModelParams::motion_ring, NAN},
                         {"motion_weight", &FlowModelParams::motion_weight, -2},
@@ -166,6 +167,11 @@ TEST(FlowModelParams, EveryMemberOutOfItsRangeIsNamed) {
     p.*c.member = c.bad;
     EXPECT_NE(validate(p).find(std::string("flow.") + c.name), std::string::npos)
         << c.name << " = " << c.bad << ": " << validate(p);
+  }
+  for (const int cells : {0, 17}) {
+    FlowModelParams p;
+    p.local_colour_cells = cells;
+    EXPECT_NE(validate(p).find("flow.local_colour_cells"), std::string::npos) << cells;
   }
 }
 

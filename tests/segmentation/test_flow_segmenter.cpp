@@ -62,7 +62,7 @@ TEST(FlowSegmenter, FollowsAnObjectOfSeveralColoursAcrossAPanningBackground) {
   cv::Mat bgr, truth, first;
   scene.render(0, bgr, truth);
   FlowSegmenter segmenter;
-  segmenter.start(images_of(bgr), truth, FlowModelParams{});
+  segmenter.start(images_of(bgr), truth, FlowModelParams{}, false);
   const FlowModelParams p;
   double worst = 1;
   for (int t = 1; t <= 30; ++t) {
@@ -92,7 +92,7 @@ double last_overlap(const FlowModelParams& p, int last, FrameAt frame_at) {
     cv::Mat bgr, truth;
     frame_at(t, bgr, truth);
     if (t == 0) {
-      segmenter.start(images_of(bgr), truth, p);
+      segmenter.start(images_of(bgr), truth, p, false);
       continue;
     }
     if (!segmenter.follow(images_of(bgr), p)) return 0;
