@@ -17,6 +17,10 @@ struct FlowModelParams {
   // many pixels (√area): a smaller object is a speck there and is carried along with what
   // surrounds it. 0: always the preset's level.
   double flow_span = 8;
+  // A start from a box: GrabCut reads the box at about ½, 1 and 2 × this many pixels (not at
+  // the working scale: a cut's grain is relative to the box), and the object is where two of
+  // the three cuts agree (segmentation/box_start).
+  double box_pixels = 20000;
   // How far the object may have moved beyond what the flow says: the carried silhouette is
   // blurred this share of √area wide before it becomes the prior.
   double prior_spread = 0.2;
@@ -57,6 +61,7 @@ struct FlowModelParams {
 
 // Empty when every member is in range (work_pixels at least 1000, prior_floor in (0, 0.5), the
 // shares, rates and weights in [0, 1] but motion_weight in [0, 50], local_colour_cells in [1, 16],
+// box_pixels in [100, 1e7],
 // memory_fade below 1, flow_span and the widths at least 0); otherwise which one is not, and its
 // range.
 std::string validate(const FlowModelParams& p);

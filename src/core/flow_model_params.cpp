@@ -24,6 +24,7 @@ std::string validate(const FlowModelParams& p) {
   const std::string checks[] = {
       outside("work_pixels", p.work_pixels, 1000, 1e9),
       outside("flow_span", p.flow_span, 0, 1e6),
+      outside("box_pixels", p.box_pixels, 100, 1e7),
       outside("prior_spread", p.prior_spread, 0, 10),
       outside("prior_floor", p.prior_floor, 0, 0.499, true),
       outside("learning_rate", p.learning_rate, 0, 1),

@@ -1,6 +1,9 @@
 #include "segmentation/box_start.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "segmentation/grab_cut.hpp"
@@ -37,23 +40,63 @@ bool cut_in_box(const cv::Mat& bgr, const cv::Rect& box, cv::Mat& object) {
 
 }  // namespace
 
-BoxStart object_in_box(const WorkImages& img, const Rect& work_box, cv::Mat& inside) {
-  const cv::Rect frame(0, 0, img.gray.cols, img.gray.rows);
-  const cv::Rect box = cv::Rect(work_box.x, work_box.y, work_box.width, work_box.height) & frame;
-  inside = cv::Mat::zeros(img.gray.size(), CV_8U);
+BoxStart object_in_box(const cv::Mat& bgr, const Rect& box_in, cv::Mat& inside) {
+  const cv::Rect frame(0, 0, bgr.cols, bgr.rows);
+  const cv::Rect box = cv::Rect(box_in.x, box_in.y, box_in.width, box_in.height) & frame;
+  inside = cv::Mat::zeros(bgr.size(), CV_8U);
   if (box.empty()) return BoxStart::Ellipse;
   const int gx = static_cast<int>(kContext * box.width);
   const int gy = static_cast<int>(kContext * box.height);
   const cv::Rect roi =
       cv::Rect(box.x - gx, box.y - gy, box.width + 2 * gx, box.height + 2 * gy) & frame;
   cv::Mat object;
-  if (cut_in_box(img.bgr(roi), box - roi.tl(), object) &&
+  if (cut_in_box(bgr(roi), box - roi.tl(), object) &&
       cv::countNonZero(object) >= kCollapsed * box.area()) {
     object.copyTo(inside(roi));
     return BoxStart::Cut;
   }
   cv::ellipse(inside, (box.tl() + box.br()) / 2, box.size() / 2, 0, 0, 360, 255, cv::FILLED);
   return BoxStart::Ellipse;
+}
+
+BoxStart object_in_box(const cv::Mat& frame, const Rect& box, double box_pixels, cv::Size work_size,
+                       cv::Mat& inside) {
+  constexpr int kCuts = 3;
+  const double area = std::max(1.0, static_cast<double>(box.width) * box.height);
+  std::array<cv::Mat, kCuts> votes;
+  std::array<BoxStart, kCuts> how{};
+  // The cuts are independent (GrabCut's seed is the thread's own): OpenCV's threads share them.
+  cv::parallel_for_(cv::Range(0, kCuts), [&](const cv::Range& range) {
+    for (int i = range.start; i < range.end; ++i) {
+      const double k = std::min(1.0, std::sqrt(box_pixels * std::ldexp(1.0, i - 1) / area));
+      cv::Mat bgr, cut;
+      cv::resize(frame, bgr, {}, k, k, cv::INTER_AREA);
+      const Rect at{static_cast<int>(std::lround(box.x * k)),
+                    static_cast<int>(std::lround(box.y * k)),
+                    static_cast<int>(std::lround(box.width * k)),
+                    static_cast<int>(std::lround(box.height * k))};
+      how[i] = object_in_box(bgr, at, cut);
+      // Its share of each work pixel, then a vote where it covers more than half.
+      cv::resize(cut, votes[i], work_size, 0, 0, cv::INTER_AREA);
+      cv::compare(votes[i], 127, votes[i], cv::CMP_GT);
+    }
+  });
+  cv::Mat count = cv::Mat::zeros(work_size, CV_8U);
+  for (const cv::Mat& v : votes) count += v / 255;
+  cv::compare(count, kCuts / 2, inside, cv::CMP_GT);
+  if (cv::countNonZero(inside) == 0) votes[1].copyTo(inside);  // three cuts apart: the middle one
+  if (cv::countNonZero(inside) == 0 && box.width > 0 && box.height > 0) {
+    // A box under a work pixel or two: its ellipse at the working size, at least a pixel.
+    const double sx = static_cast<double>(work_size.width) / frame.cols;
+    const double sy = static_cast<double>(work_size.height) / frame.rows;
+    const cv::Point centre(static_cast<int>((box.x + box.width / 2.0) * sx),
+                           static_cast<int>((box.y + box.height / 2.0) * sy));
+    const cv::Size axes(static_cast<int>(box.width * sx / 2),
+                        static_cast<int>(box.height * sy / 2));
+    cv::ellipse(inside, centre, axes, 0, 0, 360, 255, cv::FILLED);
+  }
+  const auto cuts = std::count(how.begin(), how.end(), BoxStart::Cut);
+  return cuts > kCuts / 2 ? BoxStart::Cut : BoxStart::Ellipse;
 }
 
 }  // namespace projtrack

@@ -49,7 +49,9 @@ AppearanceStart Tracker::Impl::first_flow_silhouette(const ColorView& frame, Edg
     return start;
   }
   if (t.seed_box) {
-    object_in_box(img, to_work(*t.seed_box, img.scale), work.inside);
+    WorkImages full;  // the box is cut at its own resolution, not the working frame's
+    build_work_images(frame, 1, full);
+    object_in_box(full.bgr, *t.seed_box, in.tp.flow.box_pixels, img.size(), work.inside);
     start.found = true;
     return start;
   }

@@ -149,6 +149,7 @@ TEST(FlowModelParams, EveryMemberOutOfItsRangeIsNamed) {
   };
   const Case cases[] = {{"work_pixels", &FlowModelParams::work_pixels, 999},
                         {"flow_span", &FlowModelParams::flow_span, -1},
+                        {"box_pixels", &FlowModelParams::box_pixels, 99},
                         {"prior_spread", &FlowModelParams::prior_spread, -0.1},
                         {"prior_floor", &FlowModelParams::prior_floor, 0.5},
                         {"learning_rate", &FlowModelParams::learning_rate, 1.5},

@@ -161,7 +161,7 @@ TEST(ObjectInBox, GrabCutTakesTheObjectNotTheBox) {
   const cv::Rect b = cv::boundingRect(truth);
   cv::Mat inside;
   const Rect box{b.x - 4, b.y - 4, b.width + 8, b.height + 8};
-  EXPECT_EQ(object_in_box(images_of(bgr), box, inside), BoxStart::Cut);
+  EXPECT_EQ(object_in_box(bgr, box, inside), BoxStart::Cut);
   // Its reddened half, which colour tells apart; nothing outside the box.
   cv::Mat red = truth.clone();
   red(cv::Rect(80, 0, 240, 240)).setTo(0);
@@ -169,7 +169,34 @@ TEST(ObjectInBox, GrabCutTakesTheObjectNotTheBox) {
   const cv::Rect taken = cv::boundingRect(inside);
   EXPECT_TRUE((taken & cv::Rect(box.x, box.y, box.width, box.height)) == taken);
   // A box too small to cut: the ellipse inscribed in it, said by the result.
-  EXPECT_EQ(object_in_box(images_of(bgr), {10, 10, 3, 3}, inside), BoxStart::Ellipse);
+  EXPECT_EQ(object_in_box(bgr, {10, 10, 3, 3}, inside), BoxStart::Ellipse);
+  EXPECT_GT(cv::countNonZero(inside), 0);
+}
+
+TEST(ObjectInBox, ThreeResolutionsOfTheBoxVoteAtTheWorkingSize) {
+  const Scene scene;
+  cv::Mat bgr, truth;
+  scene.render(0, bgr, truth);
+  const cv::Rect b = cv::boundingRect(truth);
+  const Rect box{b.x - 4, b.y - 4, b.width + 8, b.height + 8};
+  cv::Mat red = truth.clone(), half_red;
+  red(cv::Rect(80, 0, 240, 240)).setTo(0);
+  cv::resize(red, half_red, {160, 120}, 0, 0, cv::INTER_NEAREST);
+  // The box read at about 800, 1 600 and 3 200 px (a fraction of its 7 744), the vote at half
+  // the frame's size; and at its own resolution, never finer than the frame.
+  for (const double pixels : {1600.0, 1e6}) {
+    cv::Mat inside;
+    EXPECT_EQ(object_in_box(bgr, box, pixels, {160, 120}, inside), BoxStart::Cut) << pixels;
+    ASSERT_EQ(inside.size(), cv::Size(160, 120));
+    EXPECT_GT(cv::countNonZero(inside & half_red), 0.8 * cv::countNonZero(half_red)) << pixels;
+    const cv::Rect taken = cv::boundingRect(inside);
+    EXPECT_TRUE((taken & cv::Rect(box.x / 2 - 1, box.y / 2 - 1, box.width / 2 + 2,
+                                  box.height / 2 + 2)) == taken)
+        << pixels;
+  }
+  // A box too small to cut at any resolution: its ellipse, said by the result.
+  cv::Mat inside;
+  EXPECT_EQ(object_in_box(bgr, {10, 10, 3, 3}, 20000, {160, 120}, inside), BoxStart::Ellipse);
   EXPECT_GT(cv::countNonZero(inside), 0);
 }
 
@@ -186,7 +213,7 @@ TEST(ObjectInBox, TheBoxsCornersAreNotTheObject) {
                                  cv::Point(b.x, b.br().y - 12), b.br() - cv::Point(12, 12)})
     cv::rectangle(bgr, cv::Rect(corner, cv::Size(12, 12)), cv::Scalar(200, 60, 30), cv::FILLED);
   cv::Mat inside;
-  ASSERT_EQ(object_in_box(images_of(bgr), {b.x, b.y, b.width, b.height}, inside), BoxStart::Cut);
+  ASSERT_EQ(object_in_box(bgr, {b.x, b.y, b.width, b.height}, inside), BoxStart::Cut);
   EXPECT_GT(iou(inside, disc), 0.9);
   EXPECT_LT(cv::countNonZero(inside(cv::Rect(b.tl(), cv::Size(12, 12)))), 10);
 }
@@ -232,7 +259,7 @@ TEST(ObjectInBox, TheSameBoxGivesTheSameObjectWhateverDrewFromTheRNGBefore) {
   for (const std::uint64_t state : {1, 2, 3, 987654321}) {
     cv::theRNG().state = state;
     boxes.emplace_back();
-    object_in_box(img, {40, 30, 80, 60}, boxes.back());
+    object_in_box(img.bgr, {40, 30, 80, 60}, boxes.back());
     points.push_back(objects_at_point(img, {80, 60}, {12, 24})[1]);
     EXPECT_EQ(cv::theRNG().state, state);  // the caller's RNG is left as it was
   }
