@@ -30,10 +30,10 @@ struct FlowModelParams {
   // first frame's colours in the evidence (they anchor it against drift).
   double learning_rate = 0.05;
   double first_share = 0.5;
-  // When the first silhouette is given (a mask), the colours near each part of the object count
-  // too (segmentation/local_colours): its box cut into `local_colour_cells` × as many cells, each
-  // with its own object and surroundings colours, at this weight beside the frame-wide ones. 0:
-  // none. A start the tracker cut itself (a box, a point) does not learn them.
+  // When the first silhouette is outlined (a mask, or GrabCut within a box), the colours near
+  // each part of the object count too (segmentation/local_colours): its box cut into
+  // `local_colour_cells` × as many cells, each with its own object and surroundings colours, at
+  // this weight beside the frame-wide ones. 0: none. A start from a point does not learn them.
   double local_colour_weight = 0.5;
   int local_colour_cells = 4;
   // The followed surroundings' colours are those of a ring this share of √area wide around the

@@ -29,7 +29,7 @@ int flow_level(double area, int current, double span) {
 }  // namespace
 
 void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p,
-                          bool given) {
+                          bool outlined) {
   scale_ = img.scale;
   cv::compare(inside, 0, mask_, cv::CMP_GT);
   mask_.convertTo(last_, CV_32F, 1.0 / 255);
@@ -37,7 +37,7 @@ void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside, const Fl
   fullest_ = area_ = cv::sum(last_)[0];
   colours_.start(img.bgr, mask_);
   local_colours_.forget();
-  if (given && p.local_colour_weight > 0) {
+  if (outlined && p.local_colour_weight > 0) {
     const cv::Rect near = colour_ring(p);
     local_colours_.learn(img.bgr, near, mask_(near), around_, p.local_colour_cells);
   }

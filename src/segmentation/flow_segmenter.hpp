@@ -19,11 +19,12 @@ namespace projtrack {
 
 class FlowSegmenter {
  public:
-  // A new object: `inside` (CV_8U at the work size, non-zero on the object) on `img`. `given`:
-  // the silhouette is the user's (a mask), not the tracker's own cut, and the colours near each
-  // part of it are learned too (LocalColours): learned from a cut that took in background, they
-  // would hold that background as the object's.
-  void start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p, bool given);
+  // A new object: `inside` (CV_8U at the work size, non-zero on the object) on `img`.
+  // `outlined`: the silhouette was bounded by an outline of the object (a mask, or GrabCut within
+  // a box), and the colours near each part of it are learned too (LocalColours); from a point,
+  // where the first silhouette is a guess at the object's extent, they would hold the background
+  // that guess took in as the object's.
+  void start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p, bool outlined);
   // The object on the next frame. False when nothing of it is left (or the frame's size changed):
   // the silhouette is then empty.
   bool follow(const WorkImages& img, const FlowModelParams& p);
@@ -55,7 +56,7 @@ class FlowSegmenter {
   DenseFlow flow_;
   int flow_level_ = DenseFlow::kPresetLevel;  // the flow's pyramid level for this object
   ColourMixture colours_;
-  LocalColours local_colours_;  // learned only from a given silhouette, then followed
+  LocalColours local_colours_;  // learned only from an outlined first silhouette, then followed
   int scale_ = 1;
   double area_ = 0;     // the last silhouette's, work px
   cv::Mat last_;        // the last silhouette, CV_32F 0 or 1

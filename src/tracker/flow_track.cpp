@@ -106,10 +106,11 @@ TrackResult Tracker::Impl::start_flow(const ColorView& frame, EdgeSource& edges,
   TrackResult r;
   const int w = frame.luma.width, h = frame.luma.height;
   const bool seeded = state.track().inner.has_value();
-  const bool given = !state.track().seed_mask.empty();
+  // A mask or a box bounds the first silhouette; a point does not.
+  const bool outlined = !state.track().seed_mask.empty() || state.track().seed_box.has_value();
   AppearanceStart start = first_flow_silhouette(frame, edges, in);
   if (start.found) {
-    state.flow.start(work.images, work.inside, in.tp.flow, given);
+    state.flow.start(work.images, work.inside, in.tp.flow, outlined);
     const Features f = estimate_flow_silhouette(frame, in);
     if (f.status == EstimateStatus::OverBudget || f.status == EstimateStatus::Interrupted) {
       state.flow.forget(false);

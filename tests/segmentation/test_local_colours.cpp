@@ -1,5 +1,6 @@
-// The colours near each part of the object (LocalColours), and the flow model started from a given
-// silhouette with them: an object whose two colours are each its surroundings' on the other side.
+// The colours near each part of the object (LocalColours), and the flow model started from an
+// outlined silhouette with them: an object whose two colours are each its surroundings' on the
+// other side.
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
@@ -77,7 +78,7 @@ void crossed_scene(int t, cv::Mat& bgr, cv::Mat& inside) {
   own.copyTo(bgr, inside);
 }
 
-double last_overlap(bool given) {
+double last_overlap(bool outlined) {
   cv::Mat bgr, truth, gray;
   FlowSegmenter segmenter;
   const FlowModelParams p;
@@ -90,7 +91,7 @@ double last_overlap(bool given) {
     img.frame_width = bgr.cols;
     img.frame_height = bgr.rows;
     if (t == 0) {
-      segmenter.start(img, truth, p, given);
+      segmenter.start(img, truth, p, outlined);
       continue;
     }
     if (!segmenter.follow(img, p)) return 0;
@@ -100,7 +101,7 @@ double last_overlap(bool given) {
   return overlap;
 }
 
-TEST(LocalColours, AGivenSilhouetteIsFollowedWhereTheFrameWideColoursCannotTellIt) {
+TEST(LocalColours, AnOutlinedSilhouetteIsFollowedWhereTheFrameWideColoursCannotTellIt) {
   const double with_local = last_overlap(true), without = last_overlap(false);
   RecordProperty("with", std::to_string(with_local));
   RecordProperty("without", std::to_string(without));
