@@ -53,15 +53,19 @@ void LocalColours::learn(const cv::Mat& bgr, const cv::Rect& box, const cv::Mat&
       }
     }
   }
-  // One logarithm a cell's colour, not a pixel.
+  // One logarithm a colour a cell saw, not a pixel; the colours it did not see share one.
   ratio_.resize(n * kBins);
   for (std::size_t cell = 0; cell < n; ++cell) {
     const float o = object_total_[cell] + kBins * kPrior;
     const float s = surroundings_total_[cell] + kBins * kPrior;
+    const float unseen = std::clamp(std::log(s / o), -kMostNats, kMostNats);
     for (int b = 0; b < kBins; ++b) {
       const std::size_t i = cell * kBins + b;
-      const float r =
-          std::log((object_[i] + kPrior) / o) - std::log((surroundings_[i] + kPrior) / s);
+      if (object_[i] == 0 && surroundings_[i] == 0) {
+        ratio_[i] = unseen;
+        continue;
+      }
+      const float r = std::log((object_[i] + kPrior) * s / ((surroundings_[i] + kPrior) * o));
       ratio_[i] = std::clamp(r, -kMostNats, kMostNats);
     }
   }
