@@ -5,6 +5,22 @@
 
 namespace projtrack {
 
+namespace {
+
+// Each vector of a two-channel field scaled by (sx, sy): cv::multiply by a Scalar took 0.09 ms at
+// 427×240, this loop 0.03.
+void scale_components(float sx, float sy, cv::Mat& field) {
+  for (int y = 0; y < field.rows; ++y) {
+    float* f = field.ptr<float>(y);
+    for (int x = 0; x < 2 * field.cols; x += 2) {
+      f[x] *= sx;
+      f[x + 1] *= sy;
+    }
+  }
+}
+
+}  // namespace
+
 bool DenseFlow::compute(const cv::Mat& gray, int level) {
   level = std::clamp(level, 0, kPresetLevel);
   // Above level 0 DIS reads the frame halved, from the half's level below: the field is measured
@@ -33,10 +49,8 @@ bool DenseFlow::compute(const cv::Mat& gray, int level) {
       if (halve) {
         // To the frame's size, as DIS itself brings its finest level's field up.
         cv::resize(read_flow_, flow_, gray.size(), 0, 0, cv::INTER_LINEAR);
-        cv::multiply(flow_,
-                     cv::Scalar(static_cast<double>(gray.cols) / read.cols,
-                                static_cast<double>(gray.rows) / read.rows),
-                     flow_);
+        scale_components(static_cast<float>(gray.cols) / read.cols,
+                         static_cast<float>(gray.rows) / read.rows, flow_);
       } else {
         cv::swap(flow_, read_flow_);
       }

@@ -93,12 +93,12 @@ bool median_flow(const cv::Mat& flow, const cv::Mat& where, int count, cv::Point
 
 }  // namespace
 
-MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring) {
+MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring, cv::Mat& count,
+                         cv::Mat& around) {
   MotionSplit s;
   const int area = cv::countNonZero(inside);
   if (area == 0) return s;
   const int r = std::max(1, static_cast<int>(ring * std::sqrt(static_cast<double>(area))));
-  cv::Mat count, around;
   const cv::Rect near = square_ring(inside, r, count, around);
   const cv::Mat in = inside(near), moved = flow(near);
   s.valid = median_flow(moved, in, area, s.object) &&

@@ -34,7 +34,10 @@ struct MotionSplit {
   float separation = 0;  // how far apart the two motions are, work px a frame
   bool valid = false;    // both regions have pixels
 };
-MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring);
+// `count` and `around` are buffers (a ring of a large object spans most of the frame: kept from
+// frame to frame, they are not allocated and paged in again each time).
+MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring, cv::Mat& count,
+                         cv::Mat& around);
 
 // Adds to `log_odds` (CV_32F) each pixel's evidence of moving with the object rather than with
 // its surroundings: a Gaussian log-likelihood ratio whose spread is half the motions' separation,

@@ -87,7 +87,7 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
 void FlowSegmenter::predict(const FlowModelParams& p) {
   carry_along_flow(last_, flow_.backward(), map_, prior_);
   cv::compare(prior_, 0.5, inside_, cv::CMP_GT);
-  split_ = split_motion(flow_.backward(), inside_, p.motion_ring);
+  split_ = split_motion(flow_.backward(), inside_, p.motion_ring, ring_count_, around_);
   if (!split_.valid || p.memory_weight <= 0) return;
   // The backward flow says where the object came from: it moved by the opposite.
   // Only the memory's box, moved and grown by a pixel for the interpolation, is warped.

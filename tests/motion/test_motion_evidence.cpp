@@ -128,7 +128,8 @@ TEST(SplitMotion, ReadsTheRingAsADilationWouldAtTheFrameEdge) {
   flow(cv::Rect(0, 0, 10, 10)).setTo(cv::Scalar(-3, 1));
   cv::Mat inside = cv::Mat::zeros(50, 50, CV_8U);
   inside(cv::Rect(0, 0, 10, 10)).setTo(255);
-  const MotionSplit split = split_motion(flow, inside, 0.5);
+  cv::Mat count, around;
+  const MotionSplit split = split_motion(flow, inside, 0.5, count, around);
   ASSERT_TRUE(split.valid);
   EXPECT_FLOAT_EQ(split.object.x, -3);
   EXPECT_FLOAT_EQ(split.surroundings.x, 2);
@@ -140,7 +141,8 @@ TEST(MotionEvidence, FavoursPixelsThatMoveWithTheObject) {
   flow(cv::Rect(20, 20, 20, 20)).setTo(cv::Scalar(-4, 3));  // the object
   cv::Mat inside = cv::Mat::zeros(60, 60, CV_8U);
   inside(cv::Rect(22, 22, 16, 16)).setTo(255);
-  const MotionSplit split = split_motion(flow, inside, 0.5);
+  cv::Mat count, around;
+  const MotionSplit split = split_motion(flow, inside, 0.5, count, around);
   ASSERT_TRUE(split.valid);
   EXPECT_NEAR(split.object.x, -4, 1e-6);
   EXPECT_NEAR(split.surroundings.x, 1, 1e-6);
