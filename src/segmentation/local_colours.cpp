@@ -8,9 +8,12 @@ namespace projtrack {
 namespace {
 
 constexpr int kShift = 5;  // 256 / LocalColours::kLevels levels per bin
-// A pseudo-count per bin: a colour a cell has not seen is unlikely there, not impossible, and a
-// cell that saw few pixels says little either way.
-constexpr float kPrior = 0.5f;
+// Each class's pseudo-counts: its own count of pixels spread evenly over the bins, at this
+// weight. A colour a cell has not seen is unlikely there, not impossible; and a colour both
+// classes hold in the same share says nothing, however many more pixels one of them has in the
+// cell (a pseudo-count of a fixed size made the class with more pixels win every colour the two
+// share: a grey disc on a grey background of the same bin shrank by a fifth in ten frames).
+constexpr float kPriorWeight = 1.0f;
 
 int bin(const cv::Vec3b& c) {
   return ((c[0] >> kShift) * LocalColours::kLevels + (c[1] >> kShift)) * LocalColours::kLevels +
@@ -53,19 +56,17 @@ void LocalColours::learn(const cv::Mat& bgr, const cv::Rect& box, const cv::Mat&
       }
     }
   }
-  // One logarithm a colour a cell saw, not a pixel; the colours it did not see share one.
-  ratio_.resize(n * kBins);
+  // One logarithm a colour a cell saw, not a pixel; a colour it did not see, or a cell that saw
+  // one class only, tells nothing.
+  ratio_.assign(n * kBins, 0.f);
   for (std::size_t cell = 0; cell < n; ++cell) {
-    const float o = object_total_[cell] + kBins * kPrior;
-    const float s = surroundings_total_[cell] + kBins * kPrior;
-    const float unseen = std::clamp(std::log(s / o), -kMostNats, kMostNats);
+    const float o = object_total_[cell], s = surroundings_total_[cell];
+    if (o == 0 || s == 0) continue;
+    const float po = kPriorWeight * o / kBins, ps = kPriorWeight * s / kBins;
     for (int b = 0; b < kBins; ++b) {
       const std::size_t i = cell * kBins + b;
-      if (object_[i] == 0 && surroundings_[i] == 0) {
-        ratio_[i] = unseen;
-        continue;
-      }
-      const float r = std::log((object_[i] + kPrior) * s / ((surroundings_[i] + kPrior) * o));
+      if (object_[i] == 0 && surroundings_[i] == 0) continue;
+      const float r = std::log((object_[i] + po) * s / ((surroundings_[i] + ps) * o));
       ratio_[i] = std::clamp(r, -kMostNats, kMostNats);
     }
   }

@@ -54,6 +54,20 @@ TEST(LocalColours, EachCellTellsTheColoursItSawApart) {
   EXPECT_EQ(evidence_at(local, bgr, {20, 20}, {}), 0);
 }
 
+TEST(LocalColours, AColourBothShareSaysNothingHoweverManyMorePixelsOneHas) {
+  // One cell: 100 object pixels and 1 500 around them, all of one grey.
+  cv::Mat bgr(40, 40, CV_8UC3, cv::Scalar(100, 100, 100));
+  cv::Mat inside = cv::Mat::zeros(40, 40, CV_8U), around;
+  inside(cv::Rect(15, 15, 10, 10)).setTo(255);
+  cv::bitwise_not(inside, around);
+  LocalColours local;
+  local.learn(bgr, {0, 0, 40, 40}, inside, around, 1);
+  EXPECT_NEAR(evidence_at(local, bgr, {20, 20}, {}), 0, 1e-4);
+  // A colour neither saw: nothing either way.
+  bgr.at<cv::Vec3b>(20, 20) = {0, 250, 0};
+  EXPECT_EQ(evidence_at(local, bgr, {20, 20}, {}), 0);
+}
+
 // Frame t of a textured version of crossed(): the object moves down 1 px a frame along the line
 // where the surroundings change colour; the camera is still.
 void crossed_scene(int t, cv::Mat& bgr, cv::Mat& inside) {
