@@ -59,11 +59,10 @@ struct FlowModelParams {
   double keep_share = 0.1;
 };
 
-// Empty when every member is in range (work_pixels at least 1000, prior_floor in (0, 0.5), the
-// shares, rates and weights in [0, 1] but motion_weight in [0, 50], local_colour_cells in [1, 16],
-// box_pixels in [100, 1e7],
-// memory_fade below 1, flow_span and the widths at least 0); otherwise which one is not, and its
-// range.
+// Empty when every member is in range (work_pixels at least 1000, box_pixels in [100, 1e7],
+// prior_floor in (0, 0.5), the shares, rates and weights in [0, 1] but motion_weight in [0, 50],
+// local_colour_cells in [1, 16], memory_fade below 1, flow_span and the widths at least 0);
+// otherwise which one is not, and its range.
 std::string validate(const FlowModelParams& p);
 
 }  // namespace projtrack
