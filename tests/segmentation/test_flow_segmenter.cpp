@@ -182,8 +182,8 @@ TEST(ObjectInBox, ThreeResolutionsOfTheBoxVoteAtTheWorkingSize) {
   cv::Mat red = truth.clone(), half_red;
   red(cv::Rect(80, 0, 240, 240)).setTo(0);
   cv::resize(red, half_red, {160, 120}, 0, 0, cv::INTER_NEAREST);
-  // The box read at about 800, 1 600 and 3 200 px (a tenth to two fifths of its 7 921), the vote at half
-  // the frame's size; and at its own resolution, never finer than the frame.
+  // The box read at about 800, 1 600 and 3 200 px (a tenth to two fifths of its 7 921), the vote at
+  // half the frame's size; and at its own resolution, never finer than the frame.
   for (const double pixels : {1600.0, 1e6}) {
     cv::Mat inside;
     EXPECT_EQ(object_in_box(bgr, box, pixels, {160, 120}, inside), BoxStart::Cut) << pixels;
