@@ -34,10 +34,10 @@ class LocalColours {
  private:
   int cells_ = 0;
   cv::Rect box_;
-  std::vector<float> object_, surroundings_;              // counts, cell by cell
-  std::vector<float> object_total_, surroundings_total_;  // per cell
-  std::vector<float> ratio_;  // the log-likelihood ratio per cell and bin
-  std::vector<int> column_;   // a buffer: each column's cell
+  std::vector<float> ratio_;  // the model: the log-likelihood ratio per cell and bin
+  // Buffers of learn(): each cell's counts per bin and in all.
+  std::vector<float> object_, surroundings_, object_total_, surroundings_total_;
+  std::vector<int> column_;  // a buffer: each column's cell
 };
 
 }  // namespace projtrack
