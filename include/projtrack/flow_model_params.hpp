@@ -18,8 +18,8 @@ struct FlowModelParams {
   // surrounds it. 0: always the preset's level.
   double flow_span = 8;
   // A start from a box: GrabCut reads the box at about ½, 1 and 2 × this many pixels (not at
-  // the working scale: a cut's grain is relative to the box), and the object is where two of
-  // the three cuts agree (segmentation/box_start).
+  // the working scale: a cut's grain is relative to the box), and the object is where at least
+  // half of the cuts that did not collapse agree (segmentation/box_start).
   double box_pixels = 20000;
   // How far the object may have moved beyond what the flow says: the carried silhouette is
   // blurred this share of √area wide before it becomes the prior.

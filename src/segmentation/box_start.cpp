@@ -59,6 +59,18 @@ BoxStart object_in_box(const cv::Mat& bgr, const Rect& box_in, cv::Mat& inside) 
   return BoxStart::Ellipse;
 }
 
+void cuts_vote(const std::array<cv::Mat, 3>& votes, const std::array<BoxStart, 3>& how,
+               cv::Mat& inside) {
+  // An ellipse that outvoted the one cut of a thin dancer among spectators held them for good
+  // (davis-dev's dance-twirl from the box: J 54.5 -> 63.2).
+  const auto cuts = std::count(how.begin(), how.end(), BoxStart::Cut);
+  const int voters = cuts == 0 ? static_cast<int>(votes.size()) : static_cast<int>(cuts);
+  cv::Mat count = cv::Mat::zeros(votes[0].size(), CV_8U);
+  for (std::size_t i = 0; i < votes.size(); ++i)
+    if (cuts == 0 || how[i] == BoxStart::Cut) count += votes[i] / 255;
+  cv::compare(count, (voters - 1) / 2, inside, cv::CMP_GT);
+}
+
 BoxStart object_in_box(const cv::Mat& frame, const Rect& box, double box_pixels, cv::Size work_size,
                        cv::Mat& inside) {
   constexpr int kCuts = 3;
@@ -81,10 +93,8 @@ BoxStart object_in_box(const cv::Mat& frame, const Rect& box, double box_pixels,
       cv::compare(votes[i], 127, votes[i], cv::CMP_GT);
     }
   });
-  cv::Mat count = cv::Mat::zeros(work_size, CV_8U);
-  for (const cv::Mat& v : votes) count += v / 255;
-  cv::compare(count, kCuts / 2, inside, cv::CMP_GT);
-  if (cv::countNonZero(inside) == 0) votes[1].copyTo(inside);  // three cuts apart: the middle one
+  cuts_vote(votes, how, inside);
+  if (cv::countNonZero(inside) == 0) votes[1].copyTo(inside);  // cuts apart: the middle one
   if (cv::countNonZero(inside) == 0 && box.width > 0 && box.height > 0) {
     // A box under a work pixel or two: its ellipse at the working size, at least a pixel.
     const double sx = static_cast<double>(work_size.width) / frame.cols;
@@ -95,8 +105,7 @@ BoxStart object_in_box(const cv::Mat& frame, const Rect& box, double box_pixels,
                         static_cast<int>(box.height * sy / 2));
     cv::ellipse(inside, centre, axes, 0, 0, 360, 255, cv::FILLED);
   }
-  const auto cuts = std::count(how.begin(), how.end(), BoxStart::Cut);
-  return cuts > kCuts / 2 ? BoxStart::Cut : BoxStart::Ellipse;
+  return std::count(how.begin(), how.end(), BoxStart::Cut) > 0 ? BoxStart::Cut : BoxStart::Ellipse;
 }
 
 }  // namespace projtrack

@@ -2,8 +2,10 @@
 // colours (one of them the background's) moving across a panning textured background.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "segmentation/box_start.hpp"
 #include "segmentation/colour_mixture.hpp"
@@ -198,6 +200,30 @@ TEST(ObjectInBox, ThreeResolutionsOfTheBoxVoteAtTheWorkingSize) {
   cv::Mat inside;
   EXPECT_EQ(object_in_box(bgr, {10, 10, 3, 3}, 20000, {160, 120}, inside), BoxStart::Ellipse);
   EXPECT_GT(cv::countNonZero(inside), 0);
+}
+
+TEST(ObjectInBox, OnlyTheCutsThatDidNotCollapseVote) {
+  // Three votes on a 12 × 12 mask: columns 0-5, 3-8 and an "ellipse" over columns 2-11.
+  std::array<cv::Mat, 3> votes;
+  for (auto& v : votes) v = cv::Mat::zeros(12, 12, CV_8U);
+  votes[0].colRange(0, 6).setTo(255);
+  votes[1].colRange(3, 9).setTo(255);
+  votes[2].colRange(2, 12).setTo(255);
+  const auto columns = [](const cv::Mat& m) {
+    std::string taken;
+    for (int x = 0; x < m.cols; ++x) taken += m.at<std::uint8_t>(6, x) ? '#' : '.';
+    return taken;
+  };
+  cv::Mat inside;
+  using B = BoxStart;
+  cuts_vote(votes, {B::Cut, B::Cut, B::Cut}, inside);
+  EXPECT_EQ(columns(inside), "..#######...");  // two of three
+  cuts_vote(votes, {B::Cut, B::Cut, B::Ellipse}, inside);
+  EXPECT_EQ(columns(inside), "#########...");  // either of the two cuts: at least half
+  cuts_vote(votes, {B::Ellipse, B::Cut, B::Ellipse}, inside);
+  EXPECT_EQ(columns(inside), "...######...");  // the one cut, not the ellipses' agreement
+  cuts_vote(votes, {B::Ellipse, B::Ellipse, B::Ellipse}, inside);
+  EXPECT_EQ(columns(inside), "..#######...");  // no cut: two of the three ellipses
 }
 
 TEST(ObjectInBox, TheBoxsCornersAreNotTheObject) {
