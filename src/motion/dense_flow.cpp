@@ -1,6 +1,7 @@
 #include "motion/dense_flow.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 namespace projtrack {
@@ -21,7 +22,27 @@ void scale_components(float sx, float sy, cv::Mat& field) {
 
 }  // namespace
 
-bool DenseFlow::compute(const cv::Mat& gray, int level) {
+namespace {
+
+// The part of an image of `size` that holds `region` (frame px, `scale` frame px a pixel of the
+// image), at least 2 × kLeastSide a side where the image allows; the whole image for an empty
+// region.
+cv::Rect part_read(const cv::Rect& region, cv::Size2f scale, cv::Size size) {
+  const cv::Rect whole(0, 0, size.width, size.height);
+  if (region.empty()) return whole;
+  const int x0 = static_cast<int>(std::floor(region.x / scale.width));
+  const int y0 = static_cast<int>(std::floor(region.y / scale.height));
+  const int x1 = static_cast<int>(std::ceil(region.br().x / scale.width));
+  const int y1 = static_cast<int>(std::ceil(region.br().y / scale.height));
+  const int least = 2 * DenseFlow::kLeastSide;
+  const int gx = std::max(0, least - (x1 - x0) + 1) / 2,
+            gy = std::max(0, least - (y1 - y0) + 1) / 2;
+  return cv::Rect(cv::Point(x0 - gx, y0 - gy), cv::Point(x1 + gx, y1 + gy)) & whole;
+}
+
+}  // namespace
+
+bool DenseFlow::compute(const cv::Mat& gray, int level, cv::Rect region) {
   level = std::clamp(level, 0, kPresetLevel);
   // Above level 0 DIS reads the frame halved, from the half's level below: the field is measured
   // at the same level from a quarter of the pixels to build pyramids from (0.3 ms less a frame at
@@ -35,35 +56,55 @@ bool DenseFlow::compute(const cv::Mat& gray, int level) {
     cv::resize(gray, half_, {(gray.cols + 1) / 2, (gray.rows + 1) / 2}, 0, 0, cv::INTER_AREA);
   bool computed = false;
   if (comparable) {
-    // The ultrafast preset's patches and iterations, down to the level asked: 0.3-1.4 ms a frame
-    // at its own level, a quarter to a half of 854×480; a finer level is asked for a small object
-    // only (docs/tracker.md, "The flow model").
-    if (!dis_) {
-      dis_ = cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST);
-      dis_->setFinestScale(halve ? level - 1 : level);
-    }
     if (halve && !last_halved_) cv::resize(last_, last_half_, half_.size(), 0, 0, cv::INTER_AREA);
-    const cv::Mat& read = halve ? half_ : gray;
-    try {
-      dis_->calc(read, halve ? last_half_ : last_, read_flow_);
-      if (halve) {
-        // To the frame's size, as DIS itself brings its finest level's field up.
-        cv::resize(read_flow_, flow_, gray.size(), 0, 0, cv::INTER_LINEAR);
-        scale_components(static_cast<float>(gray.cols) / read.cols,
-                         static_cast<float>(gray.rows) / read.rows, flow_);
-      } else {
-        cv::swap(flow_, read_flow_);
-      }
-      computed = true;
-    } catch (const cv::Exception&) {
-      dis_.release();  // no flow on this frame: the caller says the object was not followed
-    }
+    computed = measure(gray, level, halve, region);
   }
   level_ = level;
   gray.copyTo(last_);
   last_halved_ = halve;
   if (halve) cv::swap(last_half_, half_);
   return computed;
+}
+
+bool DenseFlow::measure(const cv::Mat& gray, int level, bool halve, const cv::Rect& region) {
+  const cv::Mat& read = halve ? half_ : gray;
+  const cv::Size2f scale(static_cast<float>(gray.cols) / read.cols,
+                         static_cast<float>(gray.rows) / read.rows);
+  const cv::Rect part = part_read(region, scale, read.size());
+  // DIS asks for continuous images.
+  read(part).copyTo(now_);
+  (halve ? last_half_ : last_)(part).copyTo(before_);
+  // OpenCV 4.6's DIS keeps buffers of the sizes it has seen, and one reused on images of another
+  // size after a few of a smaller one crashed in its parallel loop: a new one for a new size.
+  if (!dis_ || now_.size() != dis_size_) {
+    // The ultrafast preset's patches and iterations, down to the level asked: 0.3-1.4 ms a frame
+    // at its own level, a quarter to a half of 854×480 (docs/tracker.md, "The flow model").
+    dis_ = cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST);
+    dis_->setFinestScale(halve ? level - 1 : level);
+    dis_size_ = now_.size();
+  }
+  try {
+    dis_->calc(now_, before_, read_flow_);
+  } catch (const cv::Exception&) {
+    dis_.release();  // no flow on this frame: the caller says the object was not followed
+    return false;
+  }
+  const cv::Rect frame(0, 0, gray.cols, gray.rows);
+  if (!halve && part.size() == frame.size()) {
+    cv::swap(flow_, read_flow_);
+    return true;
+  }
+  const cv::Rect to =
+      cv::Rect(cv::Point(cvRound(part.x * scale.width), cvRound(part.y * scale.height)),
+               cv::Point(cvRound(part.br().x * scale.width), cvRound(part.br().y * scale.height))) &
+      frame;
+  flow_.create(gray.size(), CV_32FC2);
+  if (to != frame) flow_.setTo(cv::Scalar::all(0));
+  // To the frame's scale, as DIS itself brings its finest level's field up.
+  cv::resize(read_flow_, up_, to.size(), 0, 0, cv::INTER_LINEAR);
+  if (halve) scale_components(scale.width, scale.height, up_);
+  up_.copyTo(flow_(to));
+  return true;
 }
 
 void DenseFlow::reset() {

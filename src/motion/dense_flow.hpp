@@ -17,20 +17,29 @@ class DenseFlow {
   // to those) and brought up to its size. False, with no flow, on the first frame, after a
   // change of size (nothing to compare with) and on a frame whose smaller side is under
   // kLeastSide (DIS refuses it).
+  // Only the motion within `region` (work px) is measured when it is given: the flow is zero
+  // outside it (a region too small for DIS is grown to its least size; an empty one is the whole
+  // frame).
   static constexpr int kLeastSide = 16;
-  bool compute(const cv::Mat& gray, int level = kPresetLevel);
+  bool compute(const cv::Mat& gray, int level = kPresetLevel, cv::Rect region = cv::Rect());
   const cv::Mat& backward() const { return flow_; }
   // Forgets the last frame: the next compute() starts afresh.
   void reset();
 
  private:
+  // DIS on `region` of the frame read (halved or not), the field brought up into flow_.
+  bool measure(const cv::Mat& gray, int level, bool halve, const cv::Rect& region);
+
   cv::Ptr<cv::DISOpticalFlow> dis_;
   int level_ = kPresetLevel;  // the level dis_ measures at
   cv::Mat last_;              // the last frame
   cv::Mat last_half_;         // halved, when it was (last_halved_)
   bool last_halved_ = false;
-  cv::Mat flow_;              // at the frame's size
-  cv::Mat half_, read_flow_;  // buffers: the frame halved, the field DIS gave
+  cv::Mat flow_;       // at the frame's size
+  cv::Size dis_size_;  // the size of the images dis_ was made for
+  // Buffers: the frame halved, the part of this and the last frame DIS reads (continuous), the
+  // field DIS gave and the same at the frame's scale.
+  cv::Mat half_, now_, before_, read_flow_, up_;
 };
 
 }  // namespace projtrack

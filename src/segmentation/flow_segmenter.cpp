@@ -57,7 +57,8 @@ void FlowSegmenter::forget(bool colours) {
 
 bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
   flow_level_ = flow_level(area_, flow_level_, p.flow_span);
-  if (last_.empty() || !flow_.compute(img.gray, flow_level_) || img.scale != scale_) {
+  if (last_.empty() || !flow_.compute(img.gray, flow_level_, motion_needed(p)) ||
+      img.scale != scale_) {
     forget(false);
     return false;
   }
@@ -82,6 +83,19 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
   mask_.convertTo(last_, CV_32F, 1.0 / 255);
   remember(p);
   return true;
+}
+
+cv::Rect FlowSegmenter::motion_needed(const FlowModelParams& p) {
+  // Everything this frame reads of the flow lies within the last and the remembered silhouettes'
+  // box moved by the object, grown by the prior's reach (two blurs) and the wider of the rings.
+  cv::Rect box = support_of(last_, support_);
+  if (!memory_.empty()) box |= support_of(memory_, support_);
+  if (box.empty()) return box;
+  const double across = std::sqrt(std::max(area_, 1.0));
+  const double moved = split_.valid ? cv::norm(split_.object) : 0;
+  const int grow = static_cast<int>(
+      (2 * p.prior_spread + std::max(p.motion_ring, p.colour_ring)) * across + 2 * moved + 4);
+  return grown_within(box, grow, last_.size());
 }
 
 void FlowSegmenter::predict(const FlowModelParams& p) {

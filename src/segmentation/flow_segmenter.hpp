@@ -39,6 +39,9 @@ class FlowSegmenter {
   // The prior: the last silhouette carried along the flow, with the remembered one moved by the
   // object's motion; the object's and its surroundings' motions into `split_`.
   void predict(const FlowModelParams& p);
+  // The part of the frame whose motion this frame reads (work px): the flow is measured there
+  // only. Empty (the whole frame) before there is a silhouette.
+  cv::Rect motion_needed(const FlowModelParams& p);
   // Where the prior reaches: its support grown by `blur` (work px), within the frame.
   cv::Rect reach_of_prior(int blur);
   // The posterior's log-odds of "object" within reach_, from the prior (blurred `blur` px wide),

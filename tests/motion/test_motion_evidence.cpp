@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "motion/dense_flow.hpp"
 #include "motion/motion_evidence.hpp"
@@ -49,6 +50,43 @@ TEST(DenseFlow, EveryLevelReadsTheMoveAndALevelMayChangeBetweenFrames) {
     const cv::Scalar mean = cv::mean(flow.backward()(cv::Rect(40, 40, 240, 160)));
     EXPECT_NEAR(mean[0], -2, 0.5) << level;
     EXPECT_NEAR(mean[1], 0, 0.5) << level;
+  }
+}
+
+TEST(DenseFlow, OnlyTheRegionAskedForIsMeasured) {
+  // A region that moves about and changes its size from frame to frame (a new DIS for each new
+  // size), at every level, near the frame's edges and too small for DIS: the move read within
+  // it, zero outside.
+  const cv::Mat first = texture({320, 240}, 1);
+  DenseFlow flow;
+  flow.compute(first, 2);
+  int dx = 0;
+  const cv::Rect regions[] = {{100, 80, 120, 90}, {0, 0, 90, 70},     {250, 170, 70, 70},
+                              {140, 100, 8, 6},   {60, 40, 200, 150}, {100, 80, 120, 90}};
+  int level = 0;
+  for (const cv::Rect& region : regions) {
+    dx += 2;
+    level = (level + 1) % 3;
+    ASSERT_TRUE(flow.compute(shifted(first, dx, 0), level, region)) << region;
+    const cv::Mat& f = flow.backward();
+    ASSERT_EQ(f.size(), first.size());
+    // Within the region, away from the frame's border (reflected there) and the region's edge.
+    const cv::Rect inner =
+        cv::Rect(region.x + 6, region.y + 6, region.width - 12, region.height - 12) &
+        cv::Rect(8, 8, 304, 224);
+    if (!inner.empty()) {
+      const cv::Scalar mean = cv::mean(f(inner));
+      EXPECT_NEAR(mean[0], -2, 0.5) << region << " level " << level;
+      EXPECT_NEAR(mean[1], 0, 0.5) << region << " level " << level;
+    }
+    // Far outside it, nothing was measured.
+    cv::Mat outside(f.size(), CV_8U, cv::Scalar(255));
+    outside(cv::Rect(region.x - 40, region.y - 40, region.width + 80, region.height + 80) &
+            cv::Rect({0, 0}, f.size()))
+        .setTo(0);
+    std::vector<cv::Mat> parts;
+    cv::split(f, parts);
+    EXPECT_EQ(cv::countNonZero((parts[0] != 0) & outside), 0) << region;
   }
 }
 
