@@ -20,10 +20,6 @@ void scale_components(float sx, float sy, cv::Mat& field) {
   }
 }
 
-}  // namespace
-
-namespace {
-
 // The part of an image of `size` that holds `region` (frame px, `scale` frame px a pixel of the
 // image), at least 2 × kLeastSide a side where the image allows; the whole image for an empty
 // region.
