@@ -1,5 +1,6 @@
-// How the whole picture moved between two frames: dense optical flow at the working scale
-// (OpenCV's DIS, the library made for it), computed once per frame for every user of it.
+// How the picture moved between two frames: dense optical flow at the working scale (OpenCV's
+// DIS, the library made for it), computed once per frame, over the whole frame or the part of it
+// its user reads.
 #pragma once
 
 #include <opencv2/core.hpp>

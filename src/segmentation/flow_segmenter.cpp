@@ -87,7 +87,8 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
 
 cv::Rect FlowSegmenter::motion_needed(const FlowModelParams& p) {
   // Everything this frame reads of the flow lies within the last and the remembered silhouettes'
-  // box moved by the object, grown by the prior's reach (two blurs) and the wider of the rings.
+  // box grown by the prior's reach (two blurs), the wider of the rings and twice the object's last
+  // motion (where it may have gone).
   cv::Rect box = support_of(last_, support_);
   if (!memory_.empty()) box |= support_of(memory_, support_);
   if (box.empty()) return box;
