@@ -88,14 +88,21 @@ bool DenseFlow::measure(const cv::Mat& gray, int level, bool halve, const cv::Re
   const cv::Rect frame(0, 0, gray.cols, gray.rows);
   if (!halve && part.size() == frame.size()) {
     cv::swap(flow_, read_flow_);
+    measured_ = frame;
     return true;
   }
   const cv::Rect to =
       cv::Rect(cv::Point(cvRound(part.x * scale.width), cvRound(part.y * scale.height)),
                cv::Point(cvRound(part.br().x * scale.width), cvRound(part.br().y * scale.height))) &
       frame;
-  flow_.create(gray.size(), CV_32FC2);
-  if (to != frame) flow_.setTo(cv::Scalar::all(0));
+  // Zero outside `to`: only the last region measured holds anything else (a field of 2 floats a
+  // pixel is not cleared whole each frame).
+  if (flow_.size() != gray.size() || flow_.type() != CV_32FC2) {
+    flow_.create(gray.size(), CV_32FC2);
+    measured_ = frame;
+  }
+  if (to != frame) flow_(measured_).setTo(cv::Scalar::all(0));
+  measured_ = to;
   // To the frame's scale, as DIS itself brings its finest level's field up.
   cv::resize(read_flow_, up_, to.size(), 0, 0, cv::INTER_LINEAR);
   if (halve) scale_components(scale.width, scale.height, up_);
@@ -111,6 +118,7 @@ void DenseFlow::reset() {
   last_.release();
   last_halved_ = false;
   flow_.release();
+  measured_ = cv::Rect();
 }
 
 }  // namespace projtrack

@@ -24,6 +24,8 @@ class DenseFlow {
   static constexpr int kLeastSide = 16;
   bool compute(const cv::Mat& gray, int level = kPresetLevel, cv::Rect region = cv::Rect());
   const cv::Mat& backward() const { return flow_; }
+  // The part of backward() that was measured: the field is zero outside it.
+  const cv::Rect& measured() const { return measured_; }
   // Forgets the last frame: the next compute() starts afresh.
   void reset();
 
@@ -37,6 +39,7 @@ class DenseFlow {
   cv::Mat last_half_;         // halved, when it was (last_halved_)
   bool last_halved_ = false;
   cv::Mat flow_;       // at the frame's size
+  cv::Rect measured_;  // flow_'s measured part
   cv::Size dis_size_;  // the size of the images dis_ was made for
   // Buffers: the frame halved, the part of this and the last frame DIS reads (continuous), the
   // field DIS gave and the same at the frame's scale.

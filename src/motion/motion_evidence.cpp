@@ -45,15 +45,14 @@ float largest_component(const cv::Mat& flow) {
   return largest;
 }
 
-void carry_along_flow(const cv::Mat& last, const cv::Mat& flow, cv::Mat& map, cv::Mat& prior) {
-  prior.create(flow.size(), CV_32F);
-  prior.setTo(0);
+cv::Rect carry_along_flow(const cv::Mat& last, const cv::Rect& held, const cv::Mat& flow,
+                          const cv::Rect& moving, cv::Mat& map, cv::Mat& prior) {
+  if (prior.size() != flow.size() || prior.type() != CV_32F)
+    prior = cv::Mat::zeros(flow.size(), CV_32F);
+  if (held.empty()) return {};
   // Only pixels that came from the last silhouette's box take a value: those within the box grown
-  // by the largest motion.
-  const cv::Rect held = support_of(last, map);
-  if (held.empty()) return;
-  // A flow with a non-finite value reaches anywhere.
-  const float largest = largest_component(flow);
+  // by the largest motion. A flow with a non-finite value reaches anywhere.
+  const float largest = largest_component(flow(moving & cv::Rect({0, 0}, flow.size())));
   const int reach = std::isfinite(largest) && largest < static_cast<float>(flow.cols + flow.rows)
                         ? static_cast<int>(std::ceil(largest)) + 1
                         : flow.cols + flow.rows;
@@ -67,6 +66,7 @@ void carry_along_flow(const cv::Mat& last, const cv::Mat& flow, cv::Mat& map, cv
   }
   cv::Mat into = prior(to);
   cv::remap(last, into, map, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+  return to;
 }
 
 namespace {

@@ -22,11 +22,13 @@ cv::Rect square_ring(const cv::Mat& inside, int width, cv::Mat& count, cv::Mat& 
 // y (a NaN in `flow` may or may not show: carry_along_flow reads one as outside the frame).
 float largest_component(const cv::Mat& flow);
 
-// `last` (CV_32F, values in [0, 1], the last frame's silhouette) moved to this frame along the
-// backward flow `flow` (DenseFlow::backward()): each pixel takes the value where it came from
-// (0 from outside the frame). `map` is a buffer.
-void carry_along_flow(const cv::Mat& last, const cv::Mat& flow, cv::Mat& map, cv::Mat& prior);
-
+// `last` (CV_32F, values in [0, 1], the last frame's silhouette, zero outside `held`) moved to
+// this frame along the backward flow `flow` (DenseFlow::backward(), zero outside `moving`): each
+// pixel takes the value where it came from (0 from outside the frame). Only the returned box of
+// `prior` is written: the rest must hold zeros (a `prior` of another size or type is made anew,
+// zero). `map` is a buffer.
+cv::Rect carry_along_flow(const cv::Mat& last, const cv::Rect& held, const cv::Mat& flow,
+                          const cv::Rect& moving, cv::Mat& map, cv::Mat& prior);
 // The object's and its surroundings' motions: the median flow inside the prior and in a ring
 // around it (`ring` × √area wide).
 struct MotionSplit {

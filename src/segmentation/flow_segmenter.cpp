@@ -32,9 +32,13 @@ void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside, const Fl
                           bool outlined) {
   scale_ = img.scale;
   cv::compare(inside, 0, mask_, cv::CMP_GT);
+  box_ = cv::boundingRect(mask_);
   mask_.convertTo(last_, CV_32F, 1.0 / 255);
   last_.copyTo(memory_);
-  fullest_ = area_ = cv::sum(last_)[0];
+  memory_box_ = box_;
+  prior_ = cv::Mat::zeros(img.size(), CV_32F);
+  prior_box_ = cv::Rect();
+  fullest_ = area_ = cv::sum(last_(box_))[0];
   colours_.start(img.bgr, mask_);
   local_colours_.forget();
   if (outlined && p.local_colour_weight > 0) {
@@ -50,6 +54,8 @@ void FlowSegmenter::forget(bool colours) {
   mask_.release();
   last_.release();
   memory_.release();
+  prior_.release();
+  box_ = memory_box_ = prior_box_ = cv::Rect();
   flow_.reset();
   local_colours_.forget();
   if (colours) colours_.forget();
@@ -63,7 +69,7 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
     return false;
   }
   predict(p);
-  const double area = cv::sum(prior_)[0];
+  const double area = cv::sum(prior_(prior_box_))[0];
   if (area < 1) {
     forget(false);
     return false;
@@ -71,16 +77,19 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
   const int blur = static_cast<int>(p.prior_spread * std::sqrt(area)) | 1;
   reach_ = reach_of_prior(2 * blur);
   weigh_evidence(img, blur, p);
-  mask_.create(img.size(), CV_8U);
-  mask_.setTo(0);
+  // The last silhouette's box is the only part of mask_ and last_ not zero: cleared, not the whole.
+  const cv::Rect was = box_;
+  mask_(was).setTo(0);
   cv::compare(log_odds_(reach_), 0, mask_(reach_), cv::CMP_GT);
   keep_pieces_on_prior(p.keep_share);
-  if (cv::countNonZero(mask_) == 0) {
+  box_ = support_of(mask_(reach_), support_) + reach_.tl();
+  if (box_.empty()) {
     forget(false);
     return false;
   }
   learn_colours(img, p);
-  mask_.convertTo(last_, CV_32F, 1.0 / 255);
+  last_(was).setTo(0);
+  mask_(box_).convertTo(last_(box_), CV_32F, 1.0 / 255);
   remember(p);
   return true;
 }
@@ -89,8 +98,7 @@ cv::Rect FlowSegmenter::motion_needed(const FlowModelParams& p) {
   // Everything this frame reads of the flow lies within the last and the remembered silhouettes'
   // box grown by the prior's reach (two blurs), the wider of the rings and twice the object's last
   // motion (where it may have gone).
-  cv::Rect box = support_of(last_, support_);
-  if (!memory_.empty()) box |= support_of(memory_, support_);
+  const cv::Rect box = box_ | memory_box_;
   if (box.empty()) return box;
   const double across = std::sqrt(std::max(area_, 1.0));
   const double moved = split_.valid ? cv::norm(split_.object) : 0;
@@ -100,27 +108,31 @@ cv::Rect FlowSegmenter::motion_needed(const FlowModelParams& p) {
 }
 
 void FlowSegmenter::predict(const FlowModelParams& p) {
-  carry_along_flow(last_, flow_.backward(), map_, prior_);
+  // prior_ is zero but in the last prior's box.
+  prior_(prior_box_).setTo(0);
+  prior_box_ = carry_along_flow(last_, box_, flow_.backward(), flow_.measured(), map_, prior_);
   cv::compare(prior_, 0.5, inside_, cv::CMP_GT);
   split_ = split_motion(flow_.backward(), inside_, p.motion_ring, ring_count_, around_);
   if (!split_.valid || p.memory_weight <= 0) return;
   // The backward flow says where the object came from: it moved by the opposite.
   // Only the memory's box, moved and grown by a pixel for the interpolation, is warped.
   const cv::Point2f by = -split_.object;
-  const cv::Rect held = support_of(memory_, support_);
-  moved_.create(memory_.size(), CV_32F);
-  moved_.setTo(0);
+  const cv::Rect held = memory_box_;
   const cv::Rect to =
       cv::Rect(held.x + static_cast<int>(std::floor(by.x)) - 1,
                held.y + static_cast<int>(std::floor(by.y)) - 1, held.width + 3, held.height + 3) &
       cv::Rect(0, 0, memory_.cols, memory_.rows);
   if (!held.empty() && !to.empty()) {
     const cv::Matx23f move(1, 0, to.x - by.x, 0, 1, to.y - by.y);
-    cv::Mat into = moved_(to);
-    cv::warpAffine(memory_, into, move, to.size(), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
+    cv::warpAffine(memory_, moved_, move, to.size(), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
                    cv::BORDER_CONSTANT, 0);
   }
-  cv::swap(memory_, moved_);
+  memory_(held).setTo(0);
+  memory_box_ = cv::Rect();
+  if (held.empty() || to.empty()) return;
+  moved_.copyTo(memory_(to));
+  memory_box_ = support_of(moved_, support_) + to.tl();
+  prior_box_ |= to;
   const auto weight = static_cast<float>(p.memory_weight);
   for (int y = to.y; y < to.y + to.height; ++y) {
     float* q = prior_.ptr<float>(y);
@@ -131,7 +143,7 @@ void FlowSegmenter::predict(const FlowModelParams& p) {
 
 cv::Rect FlowSegmenter::colour_ring(const FlowModelParams& p) {
   // The surroundings are the silhouette's square ring, as the motion's.
-  const double area = cv::countNonZero(mask_);
+  const double area = cv::countNonZero(mask_(box_));
   const int r = std::max(1, static_cast<int>(p.colour_ring * std::sqrt(area)));
   return square_ring(mask_, r, ring_count_, around_);
 }
@@ -144,15 +156,19 @@ void FlowSegmenter::learn_colours(const WorkImages& img, const FlowModelParams& 
 }
 
 void FlowSegmenter::remember(const FlowModelParams& p) {
-  area_ = cv::sum(last_)[0];
+  area_ = cv::sum(last_(box_))[0];
   fullest_ = std::max(fullest_ * (1 - p.memory_fade), area_);
-  if (last_.size() != memory_.size() || area_ >= p.memory_refresh * fullest_) last_.copyTo(memory_);
+  if (area_ < p.memory_refresh * fullest_) return;
+  memory_(memory_box_).setTo(0);
+  last_(box_).copyTo(memory_(box_));
+  memory_box_ = box_;
 }
 
 cv::Rect FlowSegmenter::reach_of_prior(int blur) {
   // The object can be only where its prior reaches: a piece beyond it holds none of the prior and
   // is dropped, and one joined to the object grows at most a blur's width a frame.
-  return grown_within(support_of(prior_, support_), blur, prior_.size());
+  return grown_within(support_of(prior_(prior_box_), support_) + prior_box_.tl(), blur,
+                      prior_.size());
 }
 
 void FlowSegmenter::weigh_evidence(const WorkImages& img, int blur, const FlowModelParams& p) {

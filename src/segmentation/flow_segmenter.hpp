@@ -30,6 +30,8 @@ class FlowSegmenter {
   bool follow(const WorkImages& img, const FlowModelParams& p);
   // This frame's silhouette, 255 on the object (CV_8U, work size); empty when there is none.
   const cv::Mat& silhouette() const { return mask_; }
+  // The silhouette's bounding box (work px): silhouette() is zero outside it.
+  const cv::Rect& silhouette_box() const { return box_; }
   bool tracking() const { return !mask_.empty(); }
   int scale() const { return scale_; }
   // Forgets the silhouette; with `colours` false the colours too.
@@ -61,16 +63,22 @@ class FlowSegmenter {
   ColourMixture colours_;
   LocalColours local_colours_;  // learned only from an outlined first silhouette, then followed
   int scale_ = 1;
-  double area_ = 0;     // the last silhouette's, work px
-  cv::Mat last_;        // the last silhouette, CV_32F 0 or 1
-  cv::Mat mask_;        // this frame's, CV_8U 0 or 255
-  cv::Mat memory_;      // the fullest recent silhouette, CV_32F, moved with the object
-  cv::Mat moved_;       // a buffer: the memory moved, then weighed
-  double fullest_ = 0;  // the fullest recent area, fading
+  double area_ = 0;  // the last silhouette's, work px
+  // The images are the work frame's size, zero outside their boxes: a frame's work is within
+  // the boxes, not the whole frame.
+  cv::Mat last_;         // the last silhouette, CV_32F 0 or 1
+  cv::Mat mask_;         // this frame's, CV_8U 0 or 255
+  cv::Rect box_;         // mask_'s and last_'s bounding box
+  cv::Mat memory_;       // the fullest recent silhouette, CV_32F, moved with the object
+  cv::Rect memory_box_;  // its bounding box
+  cv::Mat prior_;        // this frame's prior, CV_32F
+  cv::Rect prior_box_;   // a box that holds all of it
+  cv::Mat moved_;        // a buffer: the memory's box moved
+  double fullest_ = 0;   // the fullest recent area, fading
   MotionSplit split_;
   LogOddsTable prior_log_odds_;
   cv::Rect reach_;  // this frame's prior's reach: the silhouette lies within it
-  cv::Mat map_, prior_, support_, log_odds_, inside_, labels_, ring_count_, around_;  // buffers
+  cv::Mat map_, support_, log_odds_, inside_, labels_, ring_count_, around_;  // buffers
   std::vector<double> held_;  // the prior each piece holds
 };
 

@@ -89,7 +89,7 @@ void Tracker::Impl::choose_at_point(Point2i point, AppearanceStart& start) {
 
 Features Tracker::Impl::estimate_flow_silhouette(const ColorView& frame, const FrameInput& in) {
   const cv::Mat& m = state.flow.silhouette();
-  const cv::Rect b = cv::boundingRect(m);
+  const cv::Rect& b = state.flow.silhouette_box();
   work.silhouette.reset({b.x, b.y, b.width, b.height});
   for (int y = 0; y < b.height; ++y) {
     const std::uint8_t* from = m.ptr<std::uint8_t>(b.y + y) + b.x;

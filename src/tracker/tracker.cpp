@@ -55,9 +55,10 @@ SilhouetteMask Tracker::silhouette() const {
   const TrackerState& s = impl_->state;
   if (s.model() == ObjectModelKind::Flow) {
     const cv::Mat& m = s.flow.silhouette();
-    if (m.empty()) return {};
-    return {ImageView(m.data, m.cols, m.rows, static_cast<std::ptrdiff_t>(m.step)),
-            Rect{0, 0, m.cols, m.rows}, s.flow.scale(), impl_->width, impl_->height};
+    const cv::Rect& b = s.flow.silhouette_box();
+    if (m.empty() || b.empty()) return {};
+    return {ImageView(m.ptr(b.y) + b.x, b.width, b.height, static_cast<std::ptrdiff_t>(m.step)),
+            Rect{b.x, b.y, b.width, b.height}, s.flow.scale(), impl_->width, impl_->height};
   }
   if (s.model() != ObjectModelKind::Appearance || !s.object.tracking() || !s.track().last)
     return {};

@@ -133,10 +133,12 @@ TEST(CarryAlongFlow, MovesTheSilhouetteWhereItsPixelsWent) {
   last(cv::Rect(20, 30, 10, 10)).setTo(1);
   const cv::Mat flow(100, 100, CV_32FC2, cv::Scalar(-5, -4));  // came from 5 left, 4 up
   cv::Mat map, prior;
-  carry_along_flow(last, flow, map, prior);
+  const cv::Rect written =
+      carry_along_flow(last, {20, 30, 10, 10}, flow, {0, 0, 100, 100}, map, prior);
   EXPECT_FLOAT_EQ(cv::sum(prior)[0], 100);
   EXPECT_FLOAT_EQ(prior.at<float>(34, 25), 1);
   EXPECT_FLOAT_EQ(prior.at<float>(30, 20), 0);
+  EXPECT_FLOAT_EQ(cv::sum(prior(written))[0], 100);  // all that was carried lies in the box
 }
 
 TEST(CarryAlongFlow, GivesWhatAWholeFrameRemapGives) {
@@ -153,10 +155,27 @@ TEST(CarryAlongFlow, GivesWhatAWholeFrameRemapGives) {
       whole_map.at<cv::Point2f>(y, x) = cv::Point2f(x, y) + flow.at<cv::Point2f>(y, x);
   cv::remap(last, whole, whole_map, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
   cv::Mat map, prior;
-  carry_along_flow(last, flow, map, prior);
+  const cv::Rect held = cv::boundingRect(last > 0), frame(0, 0, 160, 120);
+  carry_along_flow(last, held, flow, frame, map, prior);
   EXPECT_GT(cv::sum(prior)[0], 100);
   EXPECT_EQ(cv::norm(prior, whole, cv::NORM_INF), 0);
-  carry_along_flow(cv::Mat::zeros(120, 160, CV_32F), flow, map, prior);  // nothing to carry
+  // A flow measured in part of the frame (zero elsewhere): the same as the whole frame's.
+  const cv::Rect moving(30, 20, 70, 60);
+  cv::Mat part = cv::Mat::zeros(flow.size(), CV_32FC2);
+  flow(moving).copyTo(part(moving));
+  for (int y = 0; y < flow.rows; ++y)
+    for (int x = 0; x < flow.cols; ++x)
+      whole_map.at<cv::Point2f>(y, x) = cv::Point2f(x, y) + part.at<cv::Point2f>(y, x);
+  cv::remap(last, whole, whole_map, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+  prior = cv::Mat::zeros(flow.size(), CV_32F);
+  carry_along_flow(last, held, part, moving, map, prior);
+  EXPECT_EQ(cv::norm(prior, whole, cv::NORM_INF), 0);
+  // Nothing to carry: a prior of another size is made anew, all zero.
+  prior = cv::Mat::ones(10, 10, CV_32F);
+  EXPECT_TRUE(
+      carry_along_flow(cv::Mat::zeros(120, 160, CV_32F), cv::Rect(), flow, frame, map, prior)
+          .empty());
+  EXPECT_EQ(prior.size(), flow.size());
   EXPECT_EQ(cv::countNonZero(prior), 0);
 }
 
