@@ -104,9 +104,9 @@ bool DenseFlow::measure(const cv::Mat& gray, int level, bool halve, const cv::Re
   if (to != frame) flow_(measured_).setTo(cv::Scalar::all(0));
   measured_ = to;
   // To the frame's scale, as DIS itself brings its finest level's field up.
-  cv::resize(read_flow_, up_, to.size(), 0, 0, cv::INTER_LINEAR);
-  if (halve) scale_components(scale.width, scale.height, up_);
-  up_.copyTo(flow_(to));
+  cv::Mat into = flow_(to);
+  cv::resize(read_flow_, into, to.size(), 0, 0, cv::INTER_LINEAR);
+  if (halve) scale_components(scale.width, scale.height, into);
   return true;
 }
 

@@ -42,8 +42,8 @@ class DenseFlow {
   cv::Rect measured_;  // flow_'s measured part
   cv::Size dis_size_;  // the size of the images dis_ was made for
   // Buffers: the frame halved, the part of this and the last frame DIS reads (continuous), the
-  // field DIS gave and the same at the frame's scale.
-  cv::Mat half_, now_, before_, read_flow_, up_;
+  // field DIS gave.
+  cv::Mat half_, now_, before_, read_flow_;
 };
 
 }  // namespace projtrack
