@@ -12,6 +12,9 @@ class DenseFlow {
  public:
   // DIS's ultrafast preset measures the field at a quarter of the frame's size: pyramid level 2.
   static constexpr int kPresetLevel = 2;
+  // Its patches' side at the level it reads: a patch at the edge of the part measured sees less
+  // of the picture than one within.
+  static constexpr int kPatchSide = 8;
   // The flow from `gray` (this frame, work scale, CV_8U) back to the last frame given: for each
   // pixel of this frame, where it was on the last one (CV_32FC2, work pixels), measured at
   // pyramid level `level` of `gray` (0: `gray` itself, 1: half its size, 2: a quarter; clamped

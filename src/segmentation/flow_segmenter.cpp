@@ -96,14 +96,16 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
 
 cv::Rect FlowSegmenter::motion_needed(const FlowModelParams& p) {
   // Everything this frame reads of the flow lies within the last and the remembered silhouettes'
-  // box grown by the prior's reach (two blurs), the wider of the rings and twice the object's last
-  // motion (where it may have gone).
+  // box grown by the prior's reach (two blurs) or the motion's ring, the wider, and by twice the
+  // object's last motion (where it may have gone). One of DIS's patches more: without it, a small
+  // object's flow at the region's edge was too poor (kite-surf's kiter lost).
   const cv::Rect box = box_ | memory_box_;
   if (box.empty()) return box;
   const double across = std::sqrt(std::max(area_, 1.0));
   const double moved = split_.valid ? cv::norm(split_.object) : 0;
-  const int grow = static_cast<int>(
-      (2 * p.prior_spread + std::max(p.motion_ring, p.colour_ring)) * across + 2 * moved + 4);
+  const int patch = DenseFlow::kPatchSide << flow_level_;
+  const int grow = static_cast<int>(std::max(2 * p.prior_spread, p.motion_ring) * across +
+                                    2 * moved + 4 + patch);
   return grown_within(box, grow, last_.size());
 }
 

@@ -28,6 +28,12 @@ cv::Mat shifted(const cv::Mat& m, int dx, int dy) {
   return out;
 }
 
+TEST(DenseFlow, KnowsItsPresetsPatchSide) {
+  // FlowSegmenter grows the region measured by a patch: the preset's own.
+  EXPECT_EQ(cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST)->getPatchSize(),
+            DenseFlow::kPatchSide);
+}
+
 TEST(DenseFlow, ReadsAWholePictureMoveAsTheMoveBack) {
   const cv::Mat first = texture({320, 240}, 1);
   DenseFlow flow;
