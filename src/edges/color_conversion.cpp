@@ -26,6 +26,10 @@ int luma_row_vectorised(const std::uint8_t* first, const std::array<int, 3>& at,
                        wb = cv::v_setall_u16(25), half = cv::v_setall_u16(128),
                        black = cv::v_setall_u16(16);
   for (; x + 16 + (spill ? 1 : 0) <= width; x += 16) {
+    // A frame fresh from a camera or decoder is in memory, not the cache: read 2 KB ahead, this
+    // loop ran at a third of its cached speed on it (854×480: 0.57 against 0.19 ms). A prefetch
+    // past the frame's end is a hint, never a read.
+    __builtin_prefetch(first + kPixelStride * x + 2048);
     cv::v_uint8x16 c[4];
     if constexpr (kPixelStride == 4)
       cv::v_load_deinterleave(first + 4 * x, c[0], c[1], c[2], c[3]);
