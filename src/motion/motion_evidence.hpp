@@ -29,6 +29,7 @@ float largest_component(const cv::Mat& flow);
 // zero). `map` is a buffer.
 cv::Rect carry_along_flow(const cv::Mat& last, const cv::Rect& held, const cv::Mat& flow,
                           const cv::Rect& moving, cv::Mat& map, cv::Mat& prior);
+
 // The object's and its surroundings' motions: the median flow inside the prior and in a ring
 // around it (`ring` × √area wide).
 struct MotionSplit {
