@@ -14,8 +14,8 @@ namespace projtrack {
 // GrabCut's object around work pixel `p`, in a square of half-side `half` (work px) with a disc
 // a tenth of `half` around the point certain and the ellipse half the square's size probable: one
 // candidate per half-side in `halves`, each CV_8U at the work size, the piece holding `p` only;
-// empty where GrabCut could not run or collapsed (kept under 2 % of its square: hardly more than
-// its certain disc).
+// empty where GrabCut could not run or collapsed (kept under 2 % of its square, or under twice
+// its certain disc: hardly more than what it was told).
 std::vector<cv::Mat> objects_at_point(const WorkImages& img, cv::Point p,
                                       const std::vector<int>& halves);
 

@@ -54,5 +54,35 @@ TEST(MostAgreed, TheCandidateTheOthersOverlapMost) {
   EXPECT_EQ(most_agreed({cv::Mat(), cv::Mat()}), -1);
 }
 
+// A small gray frame nearly filled by one bright ellipse (the real set's disc at half size).
+WorkImages small_bright_ellipse() {
+  cv::Mat gray(128, 183, CV_8U);
+  cv::RNG rng(5);
+  rng.fill(gray, cv::RNG::UNIFORM, 35, 45);
+  cv::Mat bright(gray.size(), CV_8U);
+  rng.fill(bright, cv::RNG::UNIFORM, 225, 235);
+  cv::Mat where = cv::Mat::zeros(gray.size(), CV_8U);
+  cv::ellipse(where, {105, 70}, {92, 48}, -20, 0, 360, 255, cv::FILLED);
+  bright.copyTo(gray, where);
+  WorkImages img;
+  img.gray = gray;
+  cv::cvtColor(gray, img.bgr, cv::COLOR_GRAY2BGR);
+  return img;
+}
+
+TEST(ObjectsAtPoint, ACutOfLittleMoreThanItsCertainDiscHasCollapsed) {
+  // Inside the ellipse, its outline within reach: the smallest square's cut can keep just the
+  // certain disc, which is over 2 % of that square on a frame this small.
+  const WorkImages img = small_bright_ellipse();
+  const cv::Point p(87, 50);
+  const std::vector<cv::Mat> found = objects_at_point(img, p, {12, 25, 38, 51});
+  ASSERT_EQ(found.size(), 4U);
+  for (const cv::Mat& m : found) {
+    if (m.empty()) continue;
+    EXPECT_EQ(m.at<std::uint8_t>(p), 255);
+    EXPECT_GT(cv::countNonZero(m), 2 * 13);  // the certain disc of radius 2 holds 13 pixels
+  }
+}
+
 }  // namespace
 }  // namespace projtrack
