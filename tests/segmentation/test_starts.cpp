@@ -10,19 +10,25 @@
 namespace projtrack {
 namespace {
 
+// Uniform noise in [back_lo, back_hi) of `type`, and in [shape_lo, shape_hi) where `shape` (CV_8U)
+// is set.
+cv::Mat noise_with_shape(const cv::Mat& shape, int type, int seed, int back_lo, int back_hi,
+                         int shape_lo, int shape_hi) {
+  cv::Mat out(shape.size(), type), inside(shape.size(), type);
+  cv::RNG rng(seed);
+  rng.fill(out, cv::RNG::UNIFORM, back_lo, back_hi);
+  rng.fill(inside, cv::RNG::UNIFORM, shape_lo, shape_hi);
+  inside.copyTo(out, shape);
+  return out;
+}
+
 // A noisy frame with a noisy disc of other colours. (GrabCut's mixtures' k-means starts from
 // random centres, but a scene this plain is cut the same from any; on davis-dev's libby the box's
 // cut varied with the generator's state.)
 cv::Mat noisy_disc() {
-  cv::Mat bgr(120, 160, CV_8UC3);
-  cv::RNG rng(3);
-  rng.fill(bgr, cv::RNG::UNIFORM, 40, 140);
-  cv::Mat disc(bgr.size(), CV_8UC3);
-  rng.fill(disc, cv::RNG::UNIFORM, 100, 220);
-  cv::Mat where = cv::Mat::zeros(bgr.size(), CV_8U);
+  cv::Mat where = cv::Mat::zeros(120, 160, CV_8U);
   cv::circle(where, {80, 60}, 30, 255, cv::FILLED);
-  disc.copyTo(bgr, where);
-  return bgr;
+  return noise_with_shape(where, CV_8UC3, 3, 40, 140, 100, 220);
 }
 
 TEST(GrabCut, TheSameCutWhateverRanBefore) {
@@ -56,17 +62,11 @@ TEST(MostAgreed, TheCandidateTheOthersOverlapMost) {
 
 // A small gray frame nearly filled by one bright ellipse (the real set's disc at half size).
 WorkImages small_bright_ellipse() {
-  cv::Mat gray(128, 183, CV_8U);
-  cv::RNG rng(5);
-  rng.fill(gray, cv::RNG::UNIFORM, 35, 45);
-  cv::Mat bright(gray.size(), CV_8U);
-  rng.fill(bright, cv::RNG::UNIFORM, 225, 235);
-  cv::Mat where = cv::Mat::zeros(gray.size(), CV_8U);
+  cv::Mat where = cv::Mat::zeros(128, 183, CV_8U);
   cv::ellipse(where, {105, 70}, {92, 48}, -20, 0, 360, 255, cv::FILLED);
-  bright.copyTo(gray, where);
   WorkImages img;
-  img.gray = gray;
-  cv::cvtColor(gray, img.bgr, cv::COLOR_GRAY2BGR);
+  img.gray = noise_with_shape(where, CV_8U, 5, 35, 45, 225, 235);
+  cv::cvtColor(img.gray, img.bgr, cv::COLOR_GRAY2BGR);
   return img;
 }
 
