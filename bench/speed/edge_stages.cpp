@@ -8,7 +8,7 @@
 #include "projtrack/tracker.hpp"
 #include "race.hpp"
 #include "sections.hpp"
-#include "tracker/edge_region.hpp"
+#include "models/edges/edge_region.hpp"
 
 namespace projtrack::bench {
 

@@ -9,7 +9,7 @@
 
 #include "machine.hpp"
 #include "projtrack/tracker.hpp"
-#include "tracker/edge_region.hpp"
+#include "models/edges/edge_region.hpp"
 
 namespace projtrack::bench {
 

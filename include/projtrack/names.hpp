@@ -40,9 +40,9 @@ inline constexpr NameRow<Acquisition> kAcquisitionNames[] = {
 #undef PROJTRACK_NAME
 };
 inline constexpr NameRow<ObjectModelKind> kObjectModelNames[] = {
-#define PROJTRACK_NAME(value, nick, description) {ObjectModelKind::value, nick, description},
+#define PROJTRACK_OBJECT_MODEL(id, nick, description) {ObjectModelKind::id, nick, description},
 #include "object_model_table.def"
-#undef PROJTRACK_NAME
+#undef PROJTRACK_OBJECT_MODEL
 };
 
 // The table of E: names_of<E>() is an array of NameRow<E>.

@@ -27,19 +27,20 @@ enum class AutoAcquisition {
   CompactMovingRegion,  // the changed pixels as candidate seeds; the most compact moving fill
 };
 
-// What the tracker knows of the object between frames.
+// What the tracker knows of the object between frames: one value per row of
+// object_model_table.def (edges: the paper's tracker on the edge image alone; appearance: the
+// object's silhouette from its colours; flow: the whole object carried along the picture's motion
+// and cut from its surroundings). docs/tracker.md says what each does.
 enum class ObjectModelKind {
-  // The paper's tracker: the estimator on the edge image from the inner point, nothing else.
-  Edges,
-  // The object as real footage shows it: its silhouette from its colours against its
-  // surroundings', the edges and its last silhouette moved by its motion; the estimator runs on
-  // that silhouette's outline (docs/tracker.md).
-  Appearance,
-  // The whole object as it moves: its last silhouette carried along the picture's dense motion
-  // (optical flow), then cut from its surroundings where the colours of both and the motion of
-  // both agree; the estimator runs on that silhouette (docs/tracker.md, "The flow model").
-  Flow,
+#define PROJTRACK_OBJECT_MODEL(id, nick, description) id,
+#include "object_model_table.def"
+#undef PROJTRACK_OBJECT_MODEL
 };
+inline constexpr int kObjectModelCount = 0
+#define PROJTRACK_OBJECT_MODEL(id, nick, description) +1
+#include "object_model_table.def"
+#undef PROJTRACK_OBJECT_MODEL
+    ;
 
 struct TrackerParams {
   ObjectModelKind model = ObjectModelKind::Appearance;

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "core/plausibility.hpp"
-#include "tracker/acquisition_policy.hpp"
+#include "tracker/refusal_policy.hpp"
 #include "tracker/tracker_impl.hpp"
 
 namespace projtrack {
@@ -20,9 +20,15 @@ Tracker::~Tracker() = default;
 Tracker::Tracker(Tracker&&) noexcept = default;
 Tracker& Tracker::operator=(Tracker&&) noexcept = default;
 
-void Tracker::seed(Point2i p) { impl_->state.seed(p); }
-void Tracker::seed_box(const Rect& box) { impl_->state.seed_box(box); }
-void Tracker::reset() { impl_->state.reset(); }
+void Tracker::seed(Point2i p) {
+  impl_->forget_object();
+  impl_->state.seed(p);
+}
+void Tracker::seed_box(const Rect& box) {
+  impl_->forget_object();
+  impl_->state.seed_box(box);
+}
+void Tracker::reset() { impl_->forget_object(); }
 
 bool Tracker::seed_mask(const ImageView& mask) {
   if (mask.data == nullptr || mask.width <= 0 || mask.height <= 0 || mask.stride < mask.width)
@@ -38,32 +44,28 @@ bool Tracker::seed_mask(const ImageView& mask) {
   cv::distanceTransform(inside, distance, cv::DIST_L2, 3);
   cv::Point deepest;
   cv::minMaxLoc(distance, nullptr, nullptr, nullptr, &deepest);
+  impl_->forget_object();
   impl_->state.seed_mask(inside, Rect{b.x, b.y, b.width, b.height}, {deepest.x, deepest.y});
   return true;
 }
 const std::optional<Point2i>& Tracker::inner_point() const { return impl_->state.track().inner; }
 void Tracker::set_stop_flag(const std::atomic<bool>* stop) { impl_->stop = stop; }
-void Tracker::relearn() { impl_->state.relearn(); }
+void Tracker::relearn() {
+  impl_->state.mark_across_change();
+  if (!impl_->model->relearn()) impl_->state.restart_within_last_box();
+}
 
 void Tracker::rescale(int width, int height, int new_width, int new_height) {
   if (width <= 0 || height <= 0 || new_width <= 0 || new_height <= 0) return;
-  impl_->state.rescale(static_cast<double>(new_width) / width,
-                       static_cast<double>(new_height) / height);
+  const double sx = static_cast<double>(new_width) / width;
+  const double sy = static_cast<double>(new_height) / height;
+  impl_->state.rescale(sx, sy, new_width, new_height);
+  if (!impl_->model->rescale(sx, sy)) impl_->state.restart_within_last_box();
 }
 
 SilhouetteMask Tracker::silhouette() const {
-  const TrackerState& s = impl_->state;
-  if (s.model() == ObjectModelKind::Flow) {
-    const cv::Mat& m = s.flow.silhouette();
-    const cv::Rect& b = s.flow.silhouette_box();
-    if (m.empty() || b.empty()) return {};
-    return {ImageView(m.ptr(b.y) + b.x, b.width, b.height, static_cast<std::ptrdiff_t>(m.step)),
-            Rect{b.x, b.y, b.width, b.height}, s.flow.scale(), impl_->width, impl_->height};
-  }
-  if (s.model() != ObjectModelKind::Appearance || !s.object.tracking() || !s.track().last)
-    return {};
-  const Mask& m = s.object.silhouette();
-  return {m.view(), m.rect(), s.object.scale(), impl_->width, impl_->height};
+  if (!impl_->state.track().last) return {};
+  return impl_->model->silhouette(impl_->width, impl_->height);
 }
 
 TrackResult Tracker::track(const ColorView& frame, const EdgeParams& edge_params, double t,
@@ -148,17 +150,22 @@ TrackResult Tracker::Impl::check_and_track(const ColorView& frame, EdgeSource& e
     return r;
   }
   // An edge map given as the frame (EdgeDetector::Input) shows no appearance: the edges model.
-  state.use_model(edges.params().detector == EdgeDetector::Input ? ObjectModelKind::Edges
-                                                                 : in.tp.model);
-  switch (state.model()) {
-    case ObjectModelKind::Edges:
-      return track_edges(frame, edges, in);
-    case ObjectModelKind::Flow:
-      return track_flow(frame, edges, in);
-    case ObjectModelKind::Appearance:
-      break;
-  }
-  return track_appearance(frame, edges, in);
+  use_model(edges.params().detector == EdgeDetector::Input ? ObjectModelKind::Edges : in.tp.model);
+  FrameEvidence ev(frame, edges, work.budget, work.estimator(in.method), in.method, in.params,
+                   in.tp, in.trace, work.images);
+  return step(ev, in);
+}
+
+void Tracker::Impl::use_model(ObjectModelKind k) {
+  if (k == kind && model) return;
+  state.switch_model();
+  model = make_object_model(k);
+  kind = k;
+}
+
+void Tracker::Impl::forget_object() {
+  model->forget(Forget::Everything);
+  state.reset();
 }
 
 void Tracker::Impl::accept(const Features& f, int width, int height, const FrameInput& in,
@@ -189,9 +196,12 @@ void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult
   r.detail = std::move(why);
   report_last(state, r);
   state.refuse();
-  const AfterRefusal next = after_refusal(state, tp, drop_now);
+  const AfterRefusal next = after_refusal(state.track(), tp, drop_now, model->drops_unsteady());
   r.detail += next.note;
-  if (next.drop) drop_refused_track(state);
+  if (!next.drop) return;
+  // A track accepted on one frame only was never an object: its model is not searched for.
+  model->forget(state.track().accepted > 1 ? Forget::Position : Forget::Everything);
+  state.drop();
 }
 
 TrackResult Tracker::Impl::not_started(std::string why, bool seeded, const TrackerParams& tp,

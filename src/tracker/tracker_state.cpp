@@ -25,12 +25,7 @@ void TrackerState::seed_mask(const cv::Mat& mask, const Rect& box, Point2i deepe
   track_.seed_mask = mask;
 }
 
-void TrackerState::reset() {
-  drop(Keep::Nothing);
-  edges_acquisition.reset();
-}
-
-void TrackerState::drop(Keep keep) {
+void TrackerState::drop() {
   Track& t = track_;
   if (t.last) {
     t.lost_area = t.last->area;
@@ -44,21 +39,10 @@ void TrackerState::drop(Keep keep) {
   t.accepted = 0;
   t.refused_in_a_row = 0;
   t.refusals = 0;
-  t.searched = 0;
   pointer.end();
-  motion.reset();
-  moved = {};
-  moved_before = {};
-  if (keep == Keep::Colours) {
-    object.forget_position();
-  } else {
-    object.forget();
-  }
-  flow.forget(keep == Keep::Nothing);
 }
 
-void TrackerState::use_model(ObjectModelKind kind) {
-  if (kind == model_) return;
+void TrackerState::switch_model() {
   // The user's start (point, box, mask) is kept: the new model starts from it its own way.
   const std::optional<Point2i> inner = track_.inner;
   const std::optional<Rect> box = track_.seed_box;
@@ -67,7 +51,6 @@ void TrackerState::use_model(ObjectModelKind kind) {
   track_.inner = inner;
   track_.seed_box = box;
   track_.seed_mask = mask;
-  model_ = kind;
 }
 
 bool TrackerState::accept(const Features& f, bool resumed, double t, int width, int height,
@@ -77,7 +60,6 @@ bool TrackerState::accept(const Features& f, bool resumed, double t, int width, 
   k.accepted = starts ? 1 : k.accepted + 1;
   if (starts) {
     k.seeded = k.inner.has_value() && !resumed;
-    k.still = 0;
     pointer.restart();  // depth needs no reference: one rule however the track (re)starts
   }
   k.velocity = k.last && !k.across_change
@@ -90,7 +72,6 @@ bool TrackerState::accept(const Features& f, bool resumed, double t, int width, 
   k.last = f;
   k.refused_in_a_row = 0;
   k.refusals <<= 1;
-  k.searched = 0;
   pointer.update(f, width, height, t, tp);
   return starts;
 }
@@ -100,8 +81,6 @@ void TrackerState::refuse() {
   track_.refusals = (track_.refusals << 1) | 1u;
   pointer.refuse();
 }
-
-void TrackerState::forget_colours() { object.forget(); }
 
 namespace {
 
@@ -125,17 +104,18 @@ Point2d scaled(Point2d c, double sx, double sy) {  // pixel centres at integer c
 
 }  // namespace
 
-void TrackerState::rescale(double sx, double sy) {
+void TrackerState::rescale(double sx, double sy, int width, int height) {
   if (!(sx > 0 && sy > 0 && std::isfinite(sx) && std::isfinite(sy))) return;
   Track& t = track_;
   if (t.inner) t.inner = scaled(*t.inner, sx, sy);
-  if (t.seed_box) t.seed_box = scaled(*t.seed_box, sx, sy);
+  // A box scaled rounds outward, and can pass the frame's edge by a pixel: clipped.
+  if (t.seed_box) t.seed_box = clip_to_frame(scaled(*t.seed_box, sx, sy), width, height);
   if (t.last) {
     Features& f = *t.last;
     f.centroid = scaled(f.centroid, sx, sy);
     f.area *= sx * sy;
-    f.bbox = scaled(f.bbox, sx, sy);
-    f.reach = scaled(f.reach, sx, sy);
+    f.bbox = clip_to_frame(scaled(f.bbox, sx, sy), width, height);
+    f.reach = clip_to_frame(scaled(f.reach, sx, sy), width, height);
     f.seed = scaled(f.seed, sx, sy);
     f.inner_point = scaled(f.inner_point, sx, sy);
   }
@@ -144,33 +124,13 @@ void TrackerState::rescale(double sx, double sy) {
   t.lost_area *= sx * sy;
   t.lost_centroid = scaled(t.lost_centroid, sx, sy);
   // Depth, √(area ÷ the frame's area), needs no rescaling.
-  edges_acquisition.reset();
-  // The appearance model's silhouette follows and its colours stay: the next frame goes on as
-  // any other (a relearn within the last box would learn the background there when the picture
-  // changed with the size, as a clip joined to another). Without a silhouette to follow, a track
-  // relearns within its box.
-  if (model_ != ObjectModelKind::Appearance || (t.last && !object.tracking())) {
-    relearn();
-    return;
-  }
-  object.rescale(sx, sy);
-  flow.forget();
-  motion.reset();
-  moved = {};
-  moved_before = {};
 }
 
-void TrackerState::relearn() {
-  // The start within a box takes the object's first silhouette there and learns its colours
-  // against the frame's border, as from a user's box; the last estimate, kept, makes it no new
-  // track (accept()).
+void TrackerState::restart_within_last_box() {
+  // The start within a box takes the object's first silhouette there, as from a user's box; the
+  // last estimate, kept, makes it no new track (accept()).
   if (track_.last && !track_.seed_box) track_.seed_box = track_.last->bbox;
   track_.across_change = true;
-  object.forget();
-  flow.forget();
-  motion.reset();
-  moved = {};
-  moved_before = {};
 }
 
 }  // namespace projtrack

@@ -1,4 +1,4 @@
-#include "tracker/edge_region.hpp"
+#include "models/edges/edge_region.hpp"
 
 #include <algorithm>
 #include <cmath>

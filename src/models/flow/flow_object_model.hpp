@@ -1,0 +1,48 @@
+// The flow model (ObjectModelKind::Flow): the whole object as it moves. Its last silhouette is
+// carried along the picture's dense motion and cut from its surroundings where that prior, the
+// colours of both and the motion of both agree (segmentation/flow_segmenter). It starts from the
+// user's mask as it is, from GrabCut's object in the user's box (segmentation/box_start), and from
+// a point or nothing from the appearance model's first silhouette checked against GrabCut's
+// candidates around the point (segmentation/point_start).
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "models/appearance/appearance_memory.hpp"
+#include "models/object_model.hpp"
+#include "segmentation/flow_segmenter.hpp"
+
+namespace projtrack {
+
+class FlowObjectModel final : public ObjectModel {
+ public:
+  bool tracking() const override { return segmenter_.tracking(); }
+  Observation start(FrameEvidence& ev, const StartRequest& request, const Track& track) override;
+  Observation follow(FrameEvidence& ev, const Track& track) override;
+  void settle(Verdict verdict) override;
+  bool rescale(double sx, double sy) override;
+  bool relearn() override;
+  void forget(Forget what) override;
+  SilhouetteMask silhouette(int frame_width, int frame_height) const override;
+
+ private:
+  // The first silhouette, into inside_ (the work images' size): the user's mask, GrabCut in the
+  // user's box, or for a point or nothing the appearance model's start.
+  AppearanceStart first_silhouette(FrameEvidence& ev, const StartRequest& request,
+                                   const Track& track, const WorkImages& img);
+  // A point start: GrabCut's candidates around the point against the appearance model's first
+  // silhouette (inside_, when `start` found it); the one the others agree with most into
+  // inside_.
+  void choose_at_point(const WorkImages& img, Point2i point, AppearanceStart& start);
+  // The segmenter's silhouette as the estimator reads it (a Mask of its box).
+  Observation observed(bool resumed);
+
+  FlowSegmenter segmenter_;
+  AppearanceMemory finder_;  // how a point or nothing finds the object's first silhouette
+  Mask first_, found_;       // the finder's buffers
+  Mask silhouette_;          // this frame's silhouette, as the estimator reads it
+  cv::Mat inside_;           // the first silhouette
+  bool starting_ = false;    // this frame's observation is a start
+};
+
+}  // namespace projtrack
