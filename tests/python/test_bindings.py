@@ -224,6 +224,99 @@ class MaskStart(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, 'not several'):
             tracker.track(frame, point=path(0), mask=disc(*path(0)))
 
+    def test_every_numeric_dtype_is_read_as_it_is_non_zero_on_the_object(self):
+        # Each mask is read in its own dtype: a value that a cast to uint8 would make 0 (0.5, 256,
+        # -256, inf, 1e-30) is non-zero, so the object; views and other byte orders alike.
+        d = disc(*path(0))
+        frame = bgr_frame(*path(0))
+        masks = {'bool': d, 'float 0.5': d * 0.5, 'float32 1e-30': (d * 1e-30).astype(np.float32),
+                 'float16 0.25': (d * 0.25).astype(np.float16), 'float -0.5': d * -0.5,
+                 'inf': np.where(d, np.inf, 0), '-inf': np.where(d, -np.inf, 0),
+                 'uint16 256': d.astype(np.uint16) * 256, 'int16 -256': d.astype(np.int16) * -256,
+                 'uint32 2**24': d.astype(np.uint32) << 24, 'int64 2**40': d.astype(np.int64) << 40,
+                 'int8 -1': -d.astype(np.int8), 'uint64 2**63': d.astype(np.uint64) << 63,
+                 'big-endian float64': (d * 0.5).astype('>f8'),
+                 'big-endian int32': (d.astype(np.int32) << 8).astype('>i4'),
+                 'Fortran order': np.asfortranarray(d * 0.5),
+                 'every second column': np.repeat(d * 300.0, 2, axis=1)[:, ::2],
+                 'bottom-up view': np.flipud(np.flipud(d * 0.5).copy()),
+                 'nested list': (d * 256).astype(int).tolist()}
+        for name, mask in masks.items():
+            with self.subTest(mask=name):
+                tracker = projtrack.Tracker(model='flow')
+                r = tracker.track(frame, mask=mask)
+                self.assertTrue(r.ok, f'{r.status} {r.detail}')
+                self.assertAlmostEqual(r.area / d.sum(), 1, delta=0.1)
+
+    def test_mixed_values_keep_every_non_zero_pixel(self):
+        # Half the disc 0.5, half 256.0, -0.0 around it: the whole disc, as the bool mask gives.
+        d = disc(*path(0))
+        mixed = np.where(d, np.where(np.arange(W) < path(0)[0], 0.5, 256.0), -0.0)
+        frame = bgr_frame(*path(0))
+        a, b = projtrack.Tracker(model='flow'), projtrack.Tracker(model='flow')
+        self.assertEqual(summary(a.track(frame, mask=mixed)), summary(b.track(frame, mask=d)))
+
+    def test_nan_is_refused_naming_where(self):
+        # NaN is neither zero nor the object: the caller decides, the tracker does not guess.
+        tracker = projtrack.Tracker(model='flow')
+        frame = bgr_frame(*path(0))
+        tracker.init(frame, disc(*path(0)))
+        before = summary(tracker.track(bgr_frame(*path(1))))
+        for dtype in (np.float16, np.float32, np.float64):
+            mask = disc(*path(0)).astype(dtype)
+            mask[100, 30] = np.nan
+            mask[200, 5] = np.nan
+            with self.subTest(dtype=dtype.__name__):
+                with self.assertRaisesRegex(ValueError, r'mask: holds NaN at \(x, y\) = '
+                                            r'\(30, 100\) \(2 NaNs in all\)'):
+                    tracker.track(frame, mask=mask)
+                with self.assertRaisesRegex(ValueError, 'mask: holds NaN'):
+                    tracker.init(frame, mask)
+        # The refused masks left the track as it was.
+        self.assertEqual(tracker.track(bgr_frame(*path(2))).status, 'ok', before)
+
+    def test_masks_of_no_number_are_a_type_error(self):
+        tracker = projtrack.Tracker(model='flow')
+        frame = bgr_frame(*path(0))
+        d = disc(*path(0))
+        for name, mask in {'complex': d.astype(np.complex128), 'object': d.astype(object),
+                           'str': d.astype(str), 'bytes': d.astype(bytes),
+                           'datetime': d.astype('datetime64[s]'), 'None': None}.items():
+            with self.subTest(mask=name):
+                with self.assertRaisesRegex(TypeError, 'mask: a numeric dtype expected'):
+                    tracker.track(frame, mask=mask)
+                if isinstance(mask, np.ndarray):
+                    with self.assertRaisesRegex(TypeError, 'mask: a numeric dtype expected'):
+                        tracker.init(frame, mask)
+
+    def test_arrays_of_other_dimensions(self):
+        # A 0-d or 3-d array is no point, box or mask: a ValueError saying what is (it was an
+        # IndexError or a TypeError about the array's rows); 1-d arrays stay points and boxes.
+        tracker = projtrack.Tracker()
+        frame = gray_frame(160, 120)
+        for where in (np.array(1), np.array(1.5), np.zeros((H, W, 1)), np.zeros((2, 2, 2))):
+            with self.subTest(shape=where.shape):
+                with self.assertRaisesRegex(ValueError, r'a point \(x, y\), a box \(x, y, w, h\) '
+                                            r'or an \(H, W\) mask expected, not an array of '
+                                            r'shape \(' + ', '.join(map(str, where.shape))):
+                    tracker.init(frame, where)
+                with self.assertRaisesRegex(ValueError, r'mask: an \(H, W\) = \(240, 320\) '
+                                            r'array expected'):
+                    tracker.track(frame, mask=where)
+        with self.assertRaisesRegex(ValueError, r'point: \(x, y\) expected, not an array of '
+                                    r'shape \(\)'):
+            tracker.track(frame, point=np.array(3))
+        with self.assertRaisesRegex(ValueError, r'box: \(x, y, width, height\) expected, not an '
+                                    r'array of shape \(1, 4\)'):
+            tracker.track(frame, box=np.array([[100, 80, 120, 80]]))
+        with self.assertRaisesRegex(ValueError, r'mask: an \(H, W\) = \(240, 320\) array '
+                                    r'expected, non-zero on the object, not one of shape \(320,\)'):
+            tracker.track(frame, mask=np.ones(W))
+        self.assertTrue(tracker.init(frame, np.array([160, 120])))
+        self.assertTrue(tracker.init(frame, np.array([120, 80, 80, 80], np.uint8)))
+        self.assertTrue(tracker.track(frame, box=np.array([120.0, 80, 80, 80])).ok)
+        self.assertTrue(tracker.track(frame, point=np.array([160, 120], np.int16)).ok)
+
 
 class Layouts(unittest.TestCase):
     """Every layout of the same pixels gives the same results as a C-ordered array."""
