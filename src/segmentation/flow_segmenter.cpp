@@ -82,6 +82,7 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
   mask_(was).setTo(0);
   cv::compare(log_odds_(reach_), 0, mask_(reach_), cv::CMP_GT);
   keep_pieces_on_prior(p.keep_share);
+  evidence_ = evidence_within(mask_(reach_));
   box_ = support_of(mask_(reach_), support_) + reach_.tl();
   if (box_.empty()) {
     forget(false);
@@ -187,11 +188,26 @@ void FlowSegmenter::weigh_evidence(const WorkImages& img, int blur, const FlowMo
     float* l = odds.ptr<float>(y);
     for (int x = 0; x < odds.cols; ++x) l[x] = prior_log_odds_(l[x]);
   }
+  odds.copyTo(prior_odds_);
   colours_.add_evidence(img.bgr(reach_), p.first_share, odds);
   // The cells moved with the object (the backward flow's opposite).
   local_colours_.add_evidence(img.bgr, reach_, split_.valid ? -split_.object : cv::Point2f(),
                               p.local_colour_weight, odds);
   add_motion_evidence(flow_.backward()(reach_), split_, p.motion_weight, p.min_separation, odds);
+}
+
+double FlowSegmenter::evidence_within(const cv::Mat& mask) const {
+  const cv::Mat total = log_odds_(reach_);
+  double sum = 0;
+  int n = 0;
+  for (int y = 0; y < mask.rows; ++y) {
+    const std::uint8_t* m = mask.ptr<std::uint8_t>(y);
+    const float* t = total.ptr<float>(y);
+    const float* q = prior_odds_.ptr<float>(y);
+    for (int x = 0; x < mask.cols; ++x)
+      if (m[x]) sum += t[x] - q[x], ++n;
+  }
+  return n > 0 ? sum / n : 0;
 }
 
 void FlowSegmenter::keep_pieces_on_prior(double keep_share) {

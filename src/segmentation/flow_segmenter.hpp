@@ -34,6 +34,10 @@ class FlowSegmenter {
   const cv::Rect& silhouette_box() const { return box_; }
   bool tracking() const { return !mask_.empty(); }
   int scale() const { return scale_; }
+  // How much this frame's own evidence (colours and motion, without the prior) says "object" over
+  // the silhouette: its mean log-odds, nats. About none when the frame shows nothing of the
+  // object where it was carried (a blank frame, a lens covered).
+  double evidence_support() const { return evidence_; }
   // Forgets the silhouette; with `colours` false the colours too.
   void forget(bool colours = true);
 
@@ -55,6 +59,8 @@ class FlowSegmenter {
   cv::Rect colour_ring(const FlowModelParams& p);
   // Keeps the silhouette as the remembered one when it is about as full as the fullest recent.
   void remember(const FlowModelParams& p);
+  // The mean of the evidence beside the prior (log_odds_ - prior_odds_) over `mask` (reach_'s).
+  double evidence_within(const cv::Mat& mask) const;
   // Keeps the pieces of the thresholded posterior that hold enough of the prior.
   void keep_pieces_on_prior(double keep_share);
 
@@ -77,7 +83,9 @@ class FlowSegmenter {
   double fullest_ = 0;   // the fullest recent area, fading
   MotionSplit split_;
   LogOddsTable prior_log_odds_;
-  cv::Rect reach_;  // this frame's prior's reach: the silhouette lies within it
+  cv::Rect reach_;       // this frame's prior's reach: the silhouette lies within it
+  cv::Mat prior_odds_;   // the prior's log-odds within reach_
+  double evidence_ = 0;  // evidence_support()
   cv::Mat map_, support_, log_odds_, inside_, labels_, ring_count_, around_;  // buffers
   std::vector<double> held_;  // the prior each piece holds
 };

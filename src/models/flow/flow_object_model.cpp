@@ -1,6 +1,7 @@
 #include "models/flow/flow_object_model.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <vector>
@@ -124,9 +125,31 @@ Observation FlowObjectModel::follow(FrameEvidence& ev, const Track&) {
   return observed(false);
 }
 
+Veto FlowObjectModel::veto(FrameEvidence&, const Features&, const Track&) {
+  // The silhouette carried where the motion says, but this frame's colours and motion do not say
+  // "object" there as they did: a blank frame, a covered lens, a cut to another shot. Judged
+  // against the track's own usual evidence (objects differ by tens of nats in how far their
+  // colours stand apart).
+  if (starting_ || !(usual_support_ > 0)) return {};
+  const double support = segmenter_.evidence_support();
+  if (support >= kLeastSupport * usual_support_) return {};
+  char why[160];
+  std::snprintf(why, sizeof why,
+                "this frame shows little of the object where it was carried: its colours and "
+                "motion say %.2g nats against the track's usual %.2g",
+                support, usual_support_);
+  return {why, false};
+}
+
 void FlowObjectModel::settle(Verdict verdict) {
   // A start not taken leaves nothing to follow.
   if (starting_ && verdict != Verdict::Accepted) segmenter_.forget(false);
+  if (!starting_ && verdict == Verdict::Accepted) {
+    const double support = segmenter_.evidence_support();
+    usual_support_ =
+        usual_support_ > 0 ? (1 - kSupportRate) * usual_support_ + kSupportRate * support : support;
+  }
+  if (starting_) usual_support_ = 0;
   starting_ = false;
 }
 
