@@ -9,9 +9,14 @@
 namespace projtrack {
 
 struct FlowModelParams {
-  // The working scale makes the frame about this many work pixels (an integer scale: 854×480 and
-  // 640×480 are read at half size, 1080p at a fifth).
+  // A start reads the whole frame at the working scale that makes it about this many work pixels
+  // (an integer scale: 854×480 and 640×480 are read at half size, 1080p at a fifth).
   double work_pixels = 100000;
+  // The object is then followed at its own scale: the integer scale that makes it about this many
+  // work pixels (its area at the start). Its work — its motion, its cut, its colours — is within
+  // a few times its area around it, so a large object costs no more than a small one, and a
+  // small one in a large frame no more than in a small one.
+  double object_pixels = 20000;
   // The picture's motion is measured at the coarsest level of DIS's pyramid (no coarser than its
   // ultrafast preset's, a quarter of the working frame) at which the object still spans this
   // many pixels (√area): a smaller object is a speck there and is carried along with what
@@ -61,10 +66,10 @@ struct FlowModelParams {
   double keep_share = 0.1;
 };
 
-// Empty when every member is in range (work_pixels at least 1000, box_pixels in [100, 1e7],
-// prior_floor in (0, 0.5), the shares, rates and weights in [0, 1] but motion_weight in [0, 50],
-// local_colour_cells in [1, 16], memory_fade below 1, flow_span and the widths at least 0);
-// otherwise which one is not, and its range.
+// Empty when every member is in range (work_pixels at least 1000, object_pixels at least 100,
+// box_pixels in [100, 1e7], prior_floor in (0, 0.5), the shares, rates and weights in [0, 1] but
+// motion_weight in [0, 50], local_colour_cells in [1, 16], memory_fade below 1, flow_span and the
+// widths at least 0); otherwise which one is not, and its range.
 std::string validate(const FlowModelParams& p);
 
 }  // namespace projtrack

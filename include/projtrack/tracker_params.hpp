@@ -94,10 +94,11 @@ struct TrackerParams {
   // 0: never.
   int still_frames = 4;
 
-  // The work one frame may do, as a multiple of the frame's pixels, in work units (about what
-  // one pixel of a fill costs; work_budget.hpp): every estimate of the frame (acquisition's
-  // seeds, the regions an estimate is redone in, the silhouette's pieces) spends from it. A frame
-  // that runs out ends with TrackStatus::OverBudget. 0: unlimited. See frame_work_limit().
+  // The work one frame may do, as a multiple of the frame's pixels (at least kLeastBudgetPixels),
+  // in work units (about what one pixel of a fill costs, a nanosecond or so; work_budget.hpp):
+  // every stage of the frame spends from it (the work images, the motion, the object model's
+  // cut, acquisition's seeds, every estimate). A frame that runs out ends with
+  // TrackStatus::OverBudget. 0: unlimited. See frame_work_limit().
   double max_work = 8;
 
   bool smoothing = true;  // One Euro filter on x, y and depth
@@ -119,14 +120,21 @@ inline constexpr SettingRange kEdgeThresholdRange{0.0, 10000.0};  // gradient ma
 
 // The least budget a frame gets, work units: a tiny frame can still afford the default rays.
 inline constexpr std::uint64_t kLeastFrameWork = 1 << 18;
+// A frame's budget counts at least this many pixels (1.5 megapixels: 1080p's budget is its own,
+// a smaller frame's that of a 1.5 MP one): the flow model's work is the object's (its silhouette
+// and surroundings at the object's own scale, its motion), not the frame's, and a small frame
+// holds an object as costly to follow as a large one does. At the default max_work that is
+// about three times what a frame of the flow model costs on davis-dev (bench/davis, 2026-11-29).
+inline constexpr double kLeastBudgetPixels = 1.5 * (1 << 20);
 inline constexpr double kMaxMaxWork = 1e6;
 
-// The work budget of one width × height frame: TrackerParams::max_work × its pixels, at least
-// kLeastFrameWork; WorkBudget::kUnlimited (all bits set) when max_work is 0 (or not a number).
+// The work budget of one width × height frame: TrackerParams::max_work × its pixels (at least
+// kLeastBudgetPixels), at least kLeastFrameWork; WorkBudget::kUnlimited (all bits set) when
+// max_work is 0 (or not a number).
 inline std::uint64_t frame_work_limit(int width, int height, const TrackerParams& tp) {
   if (!(tp.max_work > 0)) return ~std::uint64_t{0};
   const double pixels = static_cast<double>(std::max(width, 0)) * std::max(height, 0);
-  const double limit = std::min(tp.max_work, kMaxMaxWork) * pixels;
+  const double limit = std::min(tp.max_work, kMaxMaxWork) * std::max(pixels, kLeastBudgetPixels);
   return std::max(kLeastFrameWork, static_cast<std::uint64_t>(std::min(limit, 1e18)));
 }
 

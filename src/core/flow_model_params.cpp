@@ -23,6 +23,7 @@ std::string outside(const char* name, double v, double low, double high, bool op
 std::string validate(const FlowModelParams& p) {
   const std::string checks[] = {
       outside("work_pixels", p.work_pixels, 1000, 1e9),
+      outside("object_pixels", p.object_pixels, 100, 1e8),
       outside("flow_span", p.flow_span, 0, 1e6),
       outside("box_pixels", p.box_pixels, 100, 1e7),
       outside("prior_spread", p.prior_spread, 0, 10),

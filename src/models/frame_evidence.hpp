@@ -3,6 +3,9 @@
 // demand, the frame's work budget, and the settings and estimator it is tracked with.
 #pragma once
 
+#include <array>
+#include <cstdint>
+
 #include "edges/edge_source.hpp"
 #include "projtrack/color_view.hpp"
 #include "projtrack/estimator.hpp"
@@ -17,9 +20,12 @@ namespace projtrack {
 
 class FrameEvidence {
  public:
+  // The work images are built into `images`' slots (kept from frame to frame: their buffers are
+  // reused, what they hold is this frame's only once built on it).
+  using ImageSlots = std::array<WorkImages, 2>;
   FrameEvidence(const ColorView& frame, EdgeSource& edges, WorkBudget& budget, Estimator& est,
                 Method method, const Params& params, const TrackerParams& tp, Trace* trace,
-                WorkImages& images)
+                ImageSlots& images)
       : frame(frame),
         edges(edges),
         budget(budget),
@@ -28,7 +34,7 @@ class FrameEvidence {
         params(params),
         tp(tp),
         trace(trace),
-        images_(images) {}
+        slots_(images) {}
 
   const ColorView& frame;  // as given (video range; a gray frame has no chroma)
   EdgeSource& edges;       // the frame's edges, computed within the region asked for
@@ -41,13 +47,20 @@ class FrameEvidence {
 
   int width() const { return frame.luma.width; }
   int height() const { return frame.luma.height; }
-  // The whole frame at `scale` (segmentation/work_images), built on the frame's first call for
-  // that scale and shared by every later one.
-  const WorkImages& images(int scale);
+  // The frame at `scale` (segmentation/work_images) within `region` (work px; empty: the whole
+  // frame), built when this frame's images at that scale do not hold it yet, and shared by every
+  // later call; null when the budget cannot pay for reading that part of the frame
+  // (images_cost) or the stop flag is set. Two scales a frame are held at once (a start reads
+  // the whole frame at one, the object at its own); a third takes the older slot.
+  const WorkImages* images(int scale, const cv::Rect& region = cv::Rect());
+  // What building the work images of `part` (frame px) at `scale` costs, work units: every frame
+  // pixel read (luma and chroma, a block mean each), and each work pixel converted.
+  static std::uint64_t images_cost(const cv::Rect& part, int scale);
 
  private:
-  WorkImages& images_;
-  int images_scale_ = 0;  // the scale images_ holds this frame (0: none yet)
+  ImageSlots& slots_;
+  std::array<int, 2> scales_{};  // the scale each slot holds this frame at (0: none yet)
+  int older_ = 0;                // the slot a new scale takes
 };
 
 }  // namespace projtrack

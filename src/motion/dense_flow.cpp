@@ -36,10 +36,19 @@ cv::Rect part_read(const cv::Rect& region, cv::Size2f scale, cv::Size size) {
   return cv::Rect(cv::Point(x0 - gx, y0 - gy), cv::Point(x1 + gx, y1 + gy)) & whole;
 }
 
+// `part` grown to even corners (or the image's edge): its 2×2 blocks are the whole image's.
+cv::Rect even_part(const cv::Rect& part, cv::Size size) {
+  return cv::Rect(cv::Point(part.x & ~1, part.y & ~1),
+                  cv::Point(std::min(part.br().x + (part.br().x & 1), size.width),
+                            std::min(part.br().y + (part.br().y & 1), size.height)));
+}
+
 }  // namespace
 
-bool DenseFlow::compute(const cv::Mat& gray, int level, cv::Rect region) {
-  level = std::clamp(level, 0, kPresetLevel);
+bool DenseFlow::compute(const cv::Mat& gray, int level, cv::Rect region, cv::Rect valid) {
+  level = std::clamp(level, 0, kMaxLevel);
+  const cv::Rect frame(0, 0, gray.cols, gray.rows);
+  valid = valid.empty() ? frame : valid & frame;
   // Above level 0 DIS reads the frame halved, from the half's level below: the field is measured
   // at the same level from a quarter of the pixels to build pyramids from (0.3 ms less a frame at
   // 427×240; davis-dev's J within a point either way). A frame too small to halve is read whole.
@@ -48,25 +57,46 @@ bool DenseFlow::compute(const cv::Mat& gray, int level, cv::Rect region) {
       !last_.empty() && last_.size() == gray.size() && std::min(gray.cols, gray.rows) >= kLeastSide;
   // A new size or level: a new DIS (reset()).
   if (!comparable || level != level_) dis_.release();
-  if (halve)
-    cv::resize(gray, half_, {(gray.cols + 1) / 2, (gray.rows + 1) / 2}, 0, 0, cv::INTER_AREA);
+  // Only the part of the frame that holds it is read, and halved.
+  if (halve) halve_into(gray, even_part(valid, gray.size()), half_);
   bool computed = false;
   if (comparable) {
-    if (halve && !last_halved_) cv::resize(last_, last_half_, half_.size(), 0, 0, cv::INTER_AREA);
-    computed = measure(gray, level, halve, region);
+    if (halve && !last_halved_) halve_into(last_, even_part(last_valid_, last_.size()), last_half_);
+    computed = measure(gray, level, halve, region, valid & last_valid_);
   }
   level_ = level;
-  gray.copyTo(last_);
+  if (last_.size() != gray.size() || last_.type() != gray.type())
+    last_.create(gray.size(), gray.type());
+  gray(valid).copyTo(last_(valid));
+  last_valid_ = valid;
   last_halved_ = halve;
   if (halve) cv::swap(last_half_, half_);
   return computed;
 }
 
-bool DenseFlow::measure(const cv::Mat& gray, int level, bool halve, const cv::Rect& region) {
+void DenseFlow::halve_into(const cv::Mat& gray, const cv::Rect& part, cv::Mat& half) {
+  const cv::Size size((gray.cols + 1) / 2, (gray.rows + 1) / 2);
+  if (half.size() != size || half.type() != gray.type()) half.create(size, gray.type());
+  const cv::Rect to = cv::Rect(cv::Point(part.x / 2, part.y / 2),
+                               cv::Point((part.br().x + 1) / 2, (part.br().y + 1) / 2)) &
+                      cv::Rect({0, 0}, size);
+  if (to.empty() || part.empty()) return;
+  cv::Mat into = half(to);
+  cv::resize(gray(part), into, to.size(), 0, 0, cv::INTER_AREA);
+}
+
+bool DenseFlow::measure(const cv::Mat& gray, int level, bool halve, const cv::Rect& region,
+                        const cv::Rect& both) {
   const cv::Mat& read = halve ? half_ : gray;
   const cv::Size2f scale(static_cast<float>(gray.cols) / read.cols,
                          static_cast<float>(gray.rows) / read.rows);
-  const cv::Rect part = part_read(region, scale, read.size());
+  // Within what this frame and the last hold (`both`, frame px) only.
+  const cv::Rect held(cv::Point(static_cast<int>(std::ceil(both.x / scale.width)),
+                                static_cast<int>(std::ceil(both.y / scale.height))),
+                      cv::Point(static_cast<int>(both.br().x / scale.width),
+                                static_cast<int>(both.br().y / scale.height)));
+  const cv::Rect part = part_read(region, scale, read.size()) & held;
+  if (part.width < kLeastSide || part.height < kLeastSide) return false;
   // DIS asks for continuous images.
   read(part).copyTo(now_);
   (halve ? last_half_ : last_)(part).copyTo(before_);
@@ -116,6 +146,7 @@ void DenseFlow::reset() {
   // model through a new resolution and a reset).
   dis_.release();
   last_.release();
+  last_valid_ = cv::Rect();
   last_halved_ = false;
   flow_.release();
   measured_ = cv::Rect();

@@ -28,7 +28,8 @@ int flow_level(double area, int current, double span) {
 
 }  // namespace
 
-void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p,
+void FlowSegmenter::start(const WorkImages& whole, const cv::Mat& whole_inside,
+                          const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p,
                           bool outlined) {
   scale_ = img.scale;
   cv::compare(inside, 0, mask_, cv::CMP_GT);
@@ -39,7 +40,7 @@ void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside, const Fl
   prior_ = cv::Mat::zeros(img.size(), CV_32F);
   prior_box_ = cv::Rect();
   fullest_ = area_ = cv::sum(last_(box_))[0];
-  colours_.start(img.bgr, mask_);
+  colours_.start(whole.bgr, whole_inside);
   local_colours_.forget();
   if (outlined && p.local_colour_weight > 0) {
     const cv::Rect near = colour_ring(p);
@@ -47,7 +48,7 @@ void FlowSegmenter::start(const WorkImages& img, const cv::Mat& inside, const Fl
   }
   flow_.reset();
   flow_level_ = flow_level(area_, DenseFlow::kPresetLevel, p.flow_span);
-  flow_.compute(img.gray, flow_level_);
+  flow_.compute(img.gray, flow_level_, cv::Rect(), img.filled);
 }
 
 void FlowSegmenter::forget(bool colours) {
@@ -62,9 +63,9 @@ void FlowSegmenter::forget(bool colours) {
 }
 
 bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
-  flow_level_ = flow_level(area_, flow_level_, p.flow_span);
-  if (last_.empty() || !flow_.compute(img.gray, flow_level_, motion_needed(p)) ||
-      img.scale != scale_) {
+  flow_level_ = level_for(p);
+  if (last_.empty() || img.scale != scale_ ||
+      !flow_.compute(img.gray, flow_level_, motion_needed(p, flow_level_), img.filled)) {
     forget(false);
     return false;
   }
@@ -95,19 +96,80 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
   return true;
 }
 
-cv::Rect FlowSegmenter::motion_needed(const FlowModelParams& p) {
-  // Everything this frame reads of the flow lies within the last and the remembered silhouettes'
+namespace {
+
+// Work units a work pixel of the part read costs: DIS at pyramid level 0, 1 and 2 (its patches
+// are as many more as the level is finer, four times a level), and the rest of a frame's follow
+// (carrying the prior, the evidence, the cut and its pieces, the learning). Measured against the
+// estimators' units by tools/work_cost (docs/performance.md).
+constexpr std::uint64_t kMotionCost[] = {120, 30, 8, 2, 1};
+// The most pixels of its level a frame's motion is measured on: a part read that is wide for its
+// object (a fast one, the remembered silhouette apart from it) is read a level coarser, so that
+// no frame costs many times the usual (davis-dev's libby, a small dog running past poles, once
+// read a part 40 times its area at full resolution).
+constexpr int kMostFlowPixels = 1 << 15;
+constexpr std::uint64_t kCutCost = 15;
+// A start learns the colours of the whole work frame and keeps it for the next frame's motion.
+constexpr std::uint64_t kStartCost = 12;
+
+}  // namespace
+
+std::uint64_t FlowSegmenter::follow_cost(const WorkImages& img, const FlowModelParams& p) const {
+  if (last_.empty()) return 0;
+  const int level = level_for(p);
+  const cv::Rect part = motion_needed(p, level) & cv::Rect({0, 0}, img.size());
+  const auto pixels = static_cast<std::uint64_t>(std::max(part.area(), 0));
+  return pixels * (kMotionCost[std::clamp(level, 0, DenseFlow::kMaxLevel)] + kCutCost);
+}
+
+int FlowSegmenter::level_for(const FlowModelParams& p) const {
+  int level = flow_level(area_, flow_level_, p.flow_span);
+  while (level < DenseFlow::kMaxLevel &&
+         (motion_needed(p, level).area() >> (2 * level)) > kMostFlowPixels)
+    ++level;
+  return level;
+}
+
+std::uint64_t FlowSegmenter::start_cost(const WorkImages& img) {
+  return kStartCost * static_cast<std::uint64_t>(img.size().area());
+}
+
+cv::Rect FlowSegmenter::motion_needed(const FlowModelParams& p, int level) const {
+  const cv::Rect box = box_ | memory_box_;
+  const double moved = split_.valid ? cv::norm(split_.object) : 0;
+  return part_read(box, area_, moved, level, p, last_.size());
+}
+
+cv::Rect FlowSegmenter::part_read(const cv::Rect& box, double area, double moved, int level,
+                                  const FlowModelParams& p, cv::Size size) {
+  // Everything a frame reads of the flow lies within the last and the remembered silhouettes'
   // box grown by the prior's reach (two blurs) or the motion's ring, the wider, and by twice the
   // object's last motion (where it may have gone). One of DIS's patches more: without it, a small
   // object's flow at the region's edge was too poor (kite-surf's kiter lost).
-  const cv::Rect box = box_ | memory_box_;
   if (box.empty()) return box;
-  const double across = std::sqrt(std::max(area_, 1.0));
+  const double across = std::sqrt(std::max(area, 1.0));
+  const int patch = DenseFlow::kPatchSide << level;
+  const int grow =
+      static_cast<int>(std::max({2 * p.prior_spread, p.motion_ring, p.colour_ring}) * across +
+                       2 * moved + 4 + patch);
+  return grown_within(box, grow, size);
+}
+
+cv::Rect FlowSegmenter::images_needed(const FlowModelParams& p) const {
+  // This frame's part read, and as far again as the object moved and a patch more: the next
+  // frame's motion is measured against this one within it.
+  const int level = level_for(p);
   const double moved = split_.valid ? cv::norm(split_.object) : 0;
-  const int patch = DenseFlow::kPatchSide << flow_level_;
-  const int grow = static_cast<int>(std::max(2 * p.prior_spread, p.motion_ring) * across +
-                                    2 * moved + 4 + patch);
-  return grown_within(box, grow, last_.size());
+  const int more = static_cast<int>(moved) + (DenseFlow::kPatchSide << level);
+  return grown_within(motion_needed(p, level), more, last_.size());
+}
+
+cv::Rect FlowSegmenter::images_needed_at_start(const cv::Mat& inside, const FlowModelParams& p) {
+  const cv::Rect box = cv::boundingRect(inside);
+  const double area = cv::countNonZero(inside(box));
+  const int level = flow_level(area, DenseFlow::kPresetLevel, p.flow_span);
+  return grown_within(part_read(box, area, 0, level, p, inside.size()),
+                      DenseFlow::kPatchSide << level, inside.size());
 }
 
 void FlowSegmenter::predict(const FlowModelParams& p) {

@@ -4,6 +4,7 @@
 // last silhouette its memory.
 #pragma once
 
+#include <cstdint>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -19,12 +20,26 @@ namespace projtrack {
 
 class FlowSegmenter {
  public:
-  // A new object: `inside` (CV_8U at the work size, non-zero on the object) on `img`.
+  // A new object: `inside` (CV_8U at the work size, non-zero on the object) on `img` (holding at
+  // least images_needed_at_start(inside)); the frame's colours against the object's are learned
+  // on `whole` (the whole frame, at any scale), where `whole_inside` (its size) is the object.
   // `outlined`: the silhouette was bounded by an outline of the object (a mask, or GrabCut within
   // a box), and the colours near each part of it are learned too (LocalColours); from a point,
   // where the first silhouette is a guess at the object's extent, they would hold the background
   // that guess took in as the object's.
-  void start(const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p, bool outlined);
+  void start(const WorkImages& whole, const cv::Mat& whole_inside, const WorkImages& img,
+             const cv::Mat& inside, const FlowModelParams& p, bool outlined);
+  // The part of the frame (work px) the next follow() reads of its images; of start(), with
+  // `inside` the first silhouette.
+  cv::Rect images_needed(const FlowModelParams& p) const;
+  static cv::Rect images_needed_at_start(const cv::Mat& inside, const FlowModelParams& p);
+  // What follow() on `img` costs, work units (about a nanosecond each; work_budget.hpp): the
+  // motion measured in the part of the frame it reads, at the pyramid level it reads it, and the
+  // prior, evidence, cut and learning within that part. Changes nothing: a frame whose budget
+  // cannot pay for it is not followed, and the object stays as it was.
+  std::uint64_t follow_cost(const WorkImages& img, const FlowModelParams& p) const;
+  // What start() on `img` costs, work units.
+  static std::uint64_t start_cost(const WorkImages& img);
   // The object on the next frame. False when nothing of it is left (or the frame's size changed):
   // the silhouette is then empty.
   bool follow(const WorkImages& img, const FlowModelParams& p);
@@ -47,7 +62,14 @@ class FlowSegmenter {
   void predict(const FlowModelParams& p);
   // The part of the frame whose motion this frame reads (work px): the flow is measured there
   // only. Empty (the whole frame) before there is a silhouette.
-  cv::Rect motion_needed(const FlowModelParams& p);
+  cv::Rect motion_needed(const FlowModelParams& p, int level) const;
+  // The pyramid level the next frame's motion is read at: the coarsest at which the object still
+  // spans FlowModelParams::flow_span, coarser where the part read is wide for it.
+  int level_for(const FlowModelParams& p) const;
+  // The part of a frame of `size` (work px) a frame reads around the silhouette's `box` of `area`
+  // work px, for an object that last moved `moved` work px, its motion read at `level`.
+  static cv::Rect part_read(const cv::Rect& box, double area, double moved, int level,
+                            const FlowModelParams& p, cv::Size size);
   // Where the prior reaches: its support grown by `blur` (work px), within the frame.
   cv::Rect reach_of_prior(int blur);
   // The posterior's log-odds of "object" within reach_, from the prior (blurred `blur` px wide),

@@ -29,7 +29,7 @@ struct FrameWork {
   std::array<std::unique_ptr<Estimator>, kMethodCount> estimators;  // made on first use
   WorkBudget budget;  // this frame's: every stage spends from it
   SilhouetteEstimateBuffers on_silhouette;
-  WorkImages images;  // the frame at a working scale (FrameEvidence::images)
+  FrameEvidence::ImageSlots images;  // the frame at working scales (FrameEvidence::images)
 
   Estimator& estimator(Method m);
 };

@@ -133,10 +133,11 @@ TEST_F(Budget, EveryMessageSaysItsWorkAndMaxWorkIsAProperty) {
 // Fresh random dots as the edge map, with pixel-filling and automatic acquisition: every seed's
 // fill leaks to half the frame, and thirteen of them pass the budget. Once motion can be compared
 // (from the second frame), each frame ends over budget, reported as such, without a ROI meta, and
-// the next frame searches again; with no limit (max-work=0) every seed is tried.
+// the next frame searches again; with no limit (max-work=0) every seed is tried. The budget is 8 ×
+// the frame's pixels: max-work 8 × 640 × 480 ÷ 1.5 megapixels (what a smaller frame counts as).
 TEST_F(Budget, AFrameThatRunsOutSaysSoAndTheNextOnesGoOn) {
   constexpr int kW = 640, kH = 480;
-  start("object-model=edges method=pixel-filling edge-detector=input", kW, kH);
+  start("object-model=edges method=pixel-filling edge-detector=input max-work=1.5625", kW, kH);
   const auto first = push(dots(kW, kH, 0.15, 100));
   ASSERT_EQ(first.size(), 1u);
   EXPECT_EQ(first[0].status, "searching") << first[0].detail;
@@ -149,7 +150,7 @@ TEST_F(Budget, AFrameThatRunsOutSaysSoAndTheNextOnesGoOn) {
       ++over;
       EXPECT_FALSE(meta);
       EXPECT_NE(m[0].detail.find("budget"), std::string::npos) << m[0].detail;
-      EXPECT_LE(m[0].work, static_cast<guint64>(8.5 * kW * kH)) << "the default: 8 × the pixels";
+      EXPECT_LE(m[0].work, static_cast<guint64>(8.5 * kW * kH)) << "8 × the pixels";
     }
   }
   EXPECT_EQ(over, 4);

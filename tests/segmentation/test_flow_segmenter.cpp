@@ -64,7 +64,10 @@ TEST(FlowSegmenter, FollowsAnObjectOfSeveralColoursAcrossAPanningBackground) {
   cv::Mat bgr, truth, first;
   scene.render(0, bgr, truth);
   FlowSegmenter segmenter;
-  segmenter.start(images_of(bgr), truth, FlowModelParams{}, false);
+  {
+    const WorkImages img = images_of(bgr);
+    segmenter.start(img, truth, img, truth, FlowModelParams{}, false);
+  }
   const FlowModelParams p;
   double worst = 1;
   for (int t = 1; t <= 30; ++t) {
@@ -94,7 +97,8 @@ double last_overlap(const FlowModelParams& p, int last, FrameAt frame_at) {
     cv::Mat bgr, truth;
     frame_at(t, bgr, truth);
     if (t == 0) {
-      segmenter.start(images_of(bgr), truth, p, false);
+      const WorkImages img = images_of(bgr);
+      segmenter.start(img, truth, img, truth, p, false);
       continue;
     }
     if (!segmenter.follow(images_of(bgr), p)) return 0;

@@ -60,7 +60,10 @@ TEST(WorkBudget, FrameLimitScalesWithThePixelsAndZeroIsUnlimited) {
   TrackerParams tp;
   tp.max_work = 8;
   EXPECT_EQ(frame_work_limit(1920, 1080, tp), 8u * 1920 * 1080);
-  EXPECT_EQ(frame_work_limit(1, 1, tp), kLeastFrameWork) << "a tiny frame still gets some";
+  EXPECT_EQ(frame_work_limit(1, 1, tp), 12u << 20) << "a small frame counts as 1.5 megapixels";
+  EXPECT_EQ(frame_work_limit(640, 480, tp), 12u << 20);
+  tp.max_work = 0.01;
+  EXPECT_EQ(frame_work_limit(1, 1, tp), kLeastFrameWork) << "and still gets some";
   tp.max_work = 0;
   EXPECT_EQ(frame_work_limit(1920, 1080, tp), WorkBudget::kUnlimited);
 }
@@ -193,7 +196,10 @@ constexpr Start kStarts[] = {{"seeded", true, false, Acquisition::Auto},
 // next frame gets a budget of its own; the count is the same on a second run.
 TEST(WorkBudget, EveryFrameOfTheAdversarialSetStaysWithinTheBudget) {
   constexpr int kW = 320, kH = 240, kFrames = 4;
-  const TrackerParams defaults;
+  // The budget of 8 × the frame's own pixels (a frame this small counts as kLeastBudgetPixels at
+  // the default max_work): the adversarial set runs out of it.
+  TrackerParams defaults;
+  defaults.max_work = 8.0 * kW * kH / kLeastBudgetPixels;
   const std::uint64_t limit = frame_work_limit(kW, kH, defaults);
   const std::uint64_t bound = limit + overshoot_bound(kW, kH);
   std::vector<std::vector<cv::Mat>> sequences;
@@ -305,7 +311,7 @@ TEST(WorkBudget, AFrameOverBudgetIsARefusalByTheUsualRules) {
   ASSERT_EQ(first.status, TrackStatus::Ok) << first.detail;
   // 3M units: more than one cast of the costly settings costs at the least (rays blocked at
   // once), far less than their rays across the disc cost.
-  tp.max_work = 40;
+  tp.max_work = 3e6 / kLeastBudgetPixels;
   for (int i = 1; i <= tp.patience + 1; ++i) {
     const TrackResult r = t.track(view(disc(kW, kH, i)), EdgeParams{}, i / 30.0,
                                   Method::RecursiveRayCasting, costly, tp);

@@ -3,12 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
-#include <optional>
 #include <vector>
 
 #include "core/work_frame.hpp"
-#include "segmentation/box_start.hpp"
-#include "segmentation/point_start.hpp"
 
 namespace projtrack {
 
@@ -19,75 +16,39 @@ std::unique_ptr<ObjectModel> make_object_model<ObjectModelKind::Flow>() {
 
 namespace {
 
-// `m` (work coordinates at scale `from`) at the flow model's scale, 255 on the object: each work
-// pixel takes the value under its centre.
-void mask_at_scale(const Mask& m, int from, const WorkImages& img, cv::Mat& out) {
-  out = cv::Mat::zeros(img.size(), CV_8U);
-  for (int y = 0; y < out.rows; ++y) {
-    std::uint8_t* o = out.ptr<std::uint8_t>(y);
-    const int fy = (y * img.scale + img.scale / 2) / from;
-    for (int x = 0; x < out.cols; ++x)
-      if (m.at({(x * img.scale + img.scale / 2) / from, fy})) o[x] = 255;
-  }
-}
-
-const WorkImages& work_images(FrameEvidence& ev) {
+const WorkImages* work_images(FrameEvidence& ev) {
   const double pixels = static_cast<double>(ev.width()) * ev.height();
   return ev.images(work_scale(pixels, ev.tp.flow.work_pixels));
 }
 
+// `mask` (CV_8U, non-zero on the object) at `size`, 255 on the object: each pixel takes the
+// object where more than half of what it covers is the object.
+void resample_mask(const cv::Mat& mask, cv::Size size, cv::Mat& out) {
+  if (mask.size() == size) {
+    cv::compare(mask, 0, out, cv::CMP_GT);
+    return;
+  }
+  cv::Mat binary = mask > 0, resized;
+  const bool shrinks = size.width <= mask.cols;
+  cv::resize(binary, resized, size, 0, 0, shrinks ? cv::INTER_AREA : cv::INTER_LINEAR);
+  cv::compare(resized, 127, out, cv::CMP_GT);
+}
+
+// The scale at which an object of `area` frame px holds about `object_pixels` work px.
+int object_scale(double area, double object_pixels) {
+  if (!(area > 0) || !(object_pixels > 0)) return 1;
+  return std::max(1, static_cast<int>(std::lround(std::sqrt(area / object_pixels))));
+}
+
+// Takes `units` from the frame's budget; false, taking nothing, when they do not fit (or the
+// stop flag is set).
+bool pay(WorkBudget& budget, std::uint64_t units) {
+  if (budget.exhausted(units)) return false;
+  budget.spend(units);
+  return true;
+}
+
 }  // namespace
-
-AppearanceStart FlowObjectModel::first_silhouette(FrameEvidence& ev, const StartRequest& request,
-                                                  const Track& track, const WorkImages& img) {
-  AppearanceStart start;
-  if (request.from == StartRequest::From::Mask) {
-    cv::resize(*request.mask, inside_, img.size(), 0, 0, cv::INTER_AREA);
-    cv::compare(inside_, 127, inside_, cv::CMP_GT);
-    start.found = cv::countNonZero(inside_) > 0;
-    if (!start.found) start.why = "the given mask covers no pixel at the working scale";
-    return start;
-  }
-  if (request.from == StartRequest::From::Box) {
-    WorkImages full;  // the box is cut at its own resolution, not the working frame's
-    build_work_images(ev.frame, 1, full);
-    object_in_box(full.bgr, request.box, ev.tp.flow.box_pixels, img.size(), inside_);
-    start.found = true;
-    return start;
-  }
-  // A point, or none: the appearance model's start finds the object's first silhouette.
-  if (!finder_.object.knows_colours())
-    finder_.exposure =
-        exposure_for(luma_range(ev.frame.luma), ev.tp.dim_white, ev.tp.full_contrast);
-  ColorView frame = ev.frame;
-  frame.exposure = finder_.exposure;
-  start = start_appearance_track(finder_, frame, ev.edges, request, track, ev.tp, first_, found_);
-  if (start.found) {
-    mask_at_scale(found_, finder_.object.scale(), img, inside_);
-    finder_.object.forget_position();
-  }
-  if (request.from == StartRequest::From::Point) choose_at_point(img, request.point, start);
-  return start;
-}
-
-void FlowObjectModel::choose_at_point(const WorkImages& img, Point2i point,
-                                      AppearanceStart& start) {
-  // The appearance model's region is one colour region (a patch of a cow, nothing of a camel of
-  // the sand's colour): GrabCut around the point at a tenth to two fifths of the frame's height
-  // joins it as candidates, and the one the others agree with most is taken.
-  const cv::Point p(std::clamp(point.x / img.scale, 0, img.bgr.cols - 1),
-                    std::clamp(point.y / img.scale, 0, img.bgr.rows - 1));
-  const int h = img.bgr.rows;
-  std::vector<cv::Mat> candidates =
-      objects_at_point(img, p, {h / 10, h / 5, 3 * h / 10, 2 * h / 5});
-  if (start.found) candidates.insert(candidates.begin(), inside_);
-  const int chosen = most_agreed(candidates);
-  if (chosen < 0 || (start.found && chosen == 0)) return;
-  cv::swap(inside_, candidates[chosen]);
-  start.found = true;
-  start.resumed = false;
-  start.why.clear();
-}
 
 Observation FlowObjectModel::observed(bool resumed) {
   const cv::Mat& m = segmenter_.silhouette();
@@ -103,23 +64,41 @@ Observation FlowObjectModel::observed(bool resumed) {
 
 Observation FlowObjectModel::start(FrameEvidence& ev, const StartRequest& request,
                                    const Track& track) {
-  const WorkImages& img = work_images(ev);
+  // The first silhouette is found on the whole frame at its working scale; the object is then
+  // followed at its own scale (FlowModelParams::object_pixels).
+  const WorkImages* whole = work_images(ev);
+  if (!whole || !pay(ev.budget, FlowSegmenter::start_cost(*whole))) return Observation::stopped();
   // A mask or a box bounds the first silhouette; a point does not.
   const bool outlined =
       request.from == StartRequest::From::Mask || request.from == StartRequest::From::Box;
-  const AppearanceStart start = first_silhouette(ev, request, track, img);
+  const AppearanceStart start = first_silhouette(ev, request, track, *whole);
   if (!start.found) {
     if (ev.budget.ran_out() || ev.budget.interrupted()) return Observation::stopped();
     return Observation::missing(start.why);
   }
-  segmenter_.start(img, inside_, ev.tp.flow, outlined);
+  const bool masked = request.from == StartRequest::From::Mask;
+  const double area =
+      masked ? cv::countNonZero(*request.mask)
+             : cv::countNonZero(inside_) * static_cast<double>(whole->scale) * whole->scale;
+  scale_ = object_scale(area, ev.tp.flow.object_pixels);
+  resample_mask(masked ? *request.mask : inside_, work_size(ev.width(), ev.height(), scale_),
+                object_inside_);
+  if (cv::countNonZero(object_inside_) == 0)
+    return Observation::missing("the first silhouette covers no pixel at the object's scale");
+  const WorkImages* img =
+      ev.images(scale_, FlowSegmenter::images_needed_at_start(object_inside_, ev.tp.flow));
+  if (!img) return Observation::stopped();
+  segmenter_.start(*whole, inside_, *img, object_inside_, ev.tp.flow, outlined);
   starting_ = true;
   return observed(start.resumed);
 }
 
 Observation FlowObjectModel::follow(FrameEvidence& ev, const Track&) {
   starting_ = false;
-  if (!segmenter_.follow(work_images(ev), ev.tp.flow))
+  const WorkImages* img = ev.images(scale_, segmenter_.images_needed(ev.tp.flow));
+  if (!img || !pay(ev.budget, segmenter_.follow_cost(*img, ev.tp.flow)))
+    return Observation::stopped();
+  if (!segmenter_.follow(*img, ev.tp.flow))
     return Observation::missing(
         "nothing of the object is left where the picture's motion carried it");
   return observed(false);

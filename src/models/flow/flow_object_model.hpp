@@ -42,7 +42,9 @@ class FlowObjectModel final : public ObjectModel {
   AppearanceMemory finder_;  // how a point or nothing finds the object's first silhouette
   Mask first_, found_;       // the finder's buffers
   Mask silhouette_;          // this frame's silhouette, as the estimator reads it
-  cv::Mat inside_;           // the first silhouette
+  cv::Mat inside_;           // the first silhouette, at the start's working scale
+  cv::Mat object_inside_;    // the same at the object's scale
+  int scale_ = 1;            // the object's scale (FlowModelParams::object_pixels)
   bool starting_ = false;    // this frame's observation is a start
   // The evidence (FlowSegmenter::evidence_support) of the track's accepted frames, followed at
   // kSupportRate; a frame with less than kLeastSupport of it is refused (veto()). On davis-dev the
