@@ -64,12 +64,20 @@ struct FlowModelParams {
   // A piece of the new silhouette is kept when it holds at least this share of the prior that
   // the best piece holds: a region of the object's colours apart from it is not the object.
   double keep_share = 0.1;
+  // From a point (no local colours to judge them), a pixel new to the object — outside the
+  // carried silhouette eroded by `new_core` × √area — whose colour the first frame's model
+  // holds for the surroundings' gets `new_motion_share` of its motion evidence: a hand that
+  // moves with the held object it was not part of does not join it by its motion alone, while a
+  // limb of the object's colours still does. 1: motion counts alike everywhere.
+  double new_motion_share = 0.5;
+  double new_core = 0.05;
 };
 
 // Empty when every member is in range (work_pixels at least 1000, object_pixels at least 100,
 // box_pixels in [100, 1e7], prior_floor in (0, 0.5), the shares, rates and weights in [0, 1] but
 // motion_weight in [0, 50], local_colour_cells in [1, 16], memory_fade below 1, flow_span and the
-// widths at least 0); otherwise which one is not, and its range.
+// widths at least 0, new_motion_share and new_core in [0, 1]); otherwise which one is not, and
+// its range.
 std::string validate(const FlowModelParams& p);
 
 }  // namespace projtrack

@@ -40,6 +40,8 @@ std::string validate(const FlowModelParams& p) {
       outside("memory_refresh", p.memory_refresh, 0, 1),
       outside("memory_fade", p.memory_fade, 0, 0.999),
       outside("keep_share", p.keep_share, 0, 1),
+      outside("new_motion_share", p.new_motion_share, 0, 1),
+      outside("new_core", p.new_core, 0, 1),
   };
   for (const std::string& why : checks)
     if (!why.empty()) return why;

@@ -108,18 +108,21 @@ MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring
 }
 
 void add_motion_evidence(const cv::Mat& flow, const MotionSplit& split, double clamp,
-                         double min_separation, cv::Mat& log_odds) {
+                         double min_separation, cv::Mat& log_odds, const cv::Mat& damped,
+                         double damped_share) {
   if (!split.valid || split.separation < min_separation) return;
   const float spread = 0.5f * split.separation;
   const float k = 1.0f / (2 * spread * spread), c = static_cast<float>(clamp);
   const cv::Point2f o = split.object, b = split.surroundings;
+  const auto share = static_cast<float>(damped_share);
   for (int y = 0; y < flow.rows; ++y) {
     const cv::Point2f* f = flow.ptr<cv::Point2f>(y);
     float* l = log_odds.ptr<float>(y);
+    const std::uint8_t* d = damped.empty() ? nullptr : damped.ptr<std::uint8_t>(y);
     for (int x = 0; x < flow.cols; ++x) {
       const cv::Point2f d_o = f[x] - o, d_b = f[x] - b;
-      const float e = (d_b.dot(d_b) - d_o.dot(d_o)) * k;
-      l[x] += std::clamp(e, -c, c);
+      const float e = std::clamp((d_b.dot(d_b) - d_o.dot(d_o)) * k, -c, c);
+      l[x] += d != nullptr && d[x] ? share * e : e;
     }
   }
 }

@@ -46,7 +46,10 @@ MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring
 // its surroundings: a Gaussian log-likelihood ratio whose spread is half the motions' separation,
 // clamped to ±`clamp` (motion is one cue of several). Nothing when the two motions are closer
 // than `min_separation` work px: then motion tells nothing apart.
+// Where `damped` (CV_8U, log_odds' size; empty: nowhere) is set, the evidence counts at
+// `damped_share` of its value.
 void add_motion_evidence(const cv::Mat& flow, const MotionSplit& split, double clamp,
-                         double min_separation, cv::Mat& log_odds);
+                         double min_separation, cv::Mat& log_odds, const cv::Mat& damped = {},
+                         double damped_share = 1);
 
 }  // namespace projtrack

@@ -8,14 +8,8 @@ namespace projtrack {
 
 namespace {
 
-constexpr int kShift = 4;  // 256 / kLevels levels per bin
 constexpr float kPrior =
     0.1f;  // a pseudo-count per bin: an unseen colour is unlikely, not impossible
-
-int bin(const cv::Vec3b& c) {
-  return ((c[0] >> kShift) * ColourMixture::kLevels + (c[1] >> kShift)) * ColourMixture::kLevels +
-         (c[2] >> kShift);
-}
 
 void normalise(std::vector<float>& h) {
   const double total = std::accumulate(h.begin(), h.end(), 0.0);
@@ -47,6 +41,8 @@ void ColourMixture::start(const cv::Mat& bgr, const cv::Mat& inside) {
   count(bgr, inside, cv::Mat(), object_, surroundings_);
   first_object_ = object_;
   first_surroundings_ = surroundings_;
+  first_ratio_.resize(kBins);
+  for (int i = 0; i < kBins; ++i) first_ratio_[i] = std::log(object_[i] / surroundings_[i]);
 }
 
 void ColourMixture::learn(const cv::Mat& bgr, const cv::Mat& inside, const cv::Mat& around,
@@ -82,6 +78,7 @@ void ColourMixture::forget() {
   surroundings_.clear();
   first_object_.clear();
   first_surroundings_.clear();
+  first_ratio_.clear();
 }
 
 }  // namespace projtrack

@@ -13,6 +13,7 @@ class ColourMixture {
  public:
   static constexpr int kLevels = 16;  // per channel: coarse enough to learn from one frame
   static constexpr int kBins = kLevels * kLevels * kLevels;
+  static constexpr int kShift = 4;  // 256 / kLevels levels per bin
 
   // Learns both models from `bgr` (CV_8UC3): the object where `inside` (CV_8U) is set, its
   // surroundings elsewhere. The first models are kept: they anchor later ones against drift.
@@ -24,6 +25,12 @@ class ColourMixture {
   // (CV_32F): the mean of the first and the followed models, each `first_share` and the rest.
   void add_evidence(const cv::Mat& bgr, double first_share, cv::Mat& log_odds);
   bool learned() const { return !object_.empty(); }
+  // The first frame's log-likelihood ratio of object against surroundings for colour `c`
+  // (learned() must hold): the anchor that does not drift.
+  float first_ratio(const cv::Vec3b& c) const { return first_ratio_[bin(c)]; }
+  static int bin(const cv::Vec3b& c) {
+    return ((c[0] >> kShift) * kLevels + (c[1] >> kShift)) * kLevels + (c[2] >> kShift);
+  }
   void forget();
 
  private:
@@ -34,6 +41,7 @@ class ColourMixture {
              Histogram& out) const;
 
   Histogram object_, surroundings_, first_object_, first_surroundings_;
+  Histogram first_ratio_;  // log(first_object_ / first_surroundings_) per colour
   Histogram in_, out_, ratio_;  // one frame's counts; its log-likelihood ratio per colour
 };
 

@@ -255,7 +255,26 @@ void FlowSegmenter::weigh_evidence(const WorkImages& img, int blur, const FlowMo
   // The cells moved with the object (the backward flow's opposite).
   local_colours_.add_evidence(img.bgr, reach_, split_.valid ? -split_.object : cv::Point2f(),
                               p.local_colour_weight, odds);
-  add_motion_evidence(flow_.backward()(reach_), split_, p.motion_weight, p.min_separation, odds);
+  add_motion_evidence(flow_.backward()(reach_), split_, p.motion_weight, p.min_separation, odds,
+                      damp_new_pixels(img, p), p.new_motion_share);
+}
+
+const cv::Mat& FlowSegmenter::damp_new_pixels(const WorkImages& img, const FlowModelParams& p) {
+  // Within the reach, the pixels outside the carried silhouette's core whose colour the first
+  // frame's model calls the surroundings': a hand that moves with the object it holds. Only from
+  // a point: an outlined start's local colours judge the new pixels near each part already.
+  static const cv::Mat none;
+  if (local_colours_.learned() || p.new_motion_share >= 1 || !colours_.learned()) return none;
+  const int r = std::max(1, static_cast<int>(p.new_core * std::sqrt(std::max(area_, 1.0))));
+  cv::erode(inside_(reach_), new_pixels_,
+            cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * r + 1, 2 * r + 1}));
+  for (int y = 0; y < new_pixels_.rows; ++y) {
+    std::uint8_t* n = new_pixels_.ptr<std::uint8_t>(y);
+    const cv::Vec3b* c = img.bgr.ptr<cv::Vec3b>(reach_.y + y) + reach_.x;
+    for (int x = 0; x < new_pixels_.cols; ++x)
+      n[x] = !n[x] && colours_.first_ratio(c[x]) < 0 ? 255 : 0;
+  }
+  return new_pixels_;
 }
 
 double FlowSegmenter::evidence_within(const cv::Mat& mask) const {

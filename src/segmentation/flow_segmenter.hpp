@@ -75,6 +75,9 @@ class FlowSegmenter {
   // The posterior's log-odds of "object" within reach_, from the prior (blurred `blur` px wide),
   // colours and motion.
   void weigh_evidence(const WorkImages& img, int blur, const FlowModelParams& p);
+  // The pixels of reach_ (CV_8U) whose motion counts less (FlowModelParams::new_motion_share);
+  // empty when none.
+  const cv::Mat& damp_new_pixels(const WorkImages& img, const FlowModelParams& p);
   // Follows the colours of the silhouette and of a ring around it.
   void learn_colours(const WorkImages& img, const FlowModelParams& p);
   // The silhouette's square ring (`colour_ring` × √area wide) into `around_`; its box returned.
@@ -109,6 +112,7 @@ class FlowSegmenter {
   cv::Mat prior_odds_;   // the prior's log-odds within reach_
   double evidence_ = 0;  // evidence_support()
   cv::Mat map_, support_, log_odds_, inside_, labels_, ring_count_, around_;  // buffers
+  cv::Mat new_pixels_;  // buffer of damp_new_pixels()
   std::vector<double> held_;  // the prior each piece holds
 };
 

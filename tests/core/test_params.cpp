@@ -162,7 +162,9 @@ TEST(FlowModelParams, EveryMemberOutOfItsRangeIsNamed) {
                         {"memory_weight", &FlowModelParams::memory_weight, 2},
                         {"memory_refresh", &FlowModelParams::memory_refresh, -0.5},
                         {"memory_fade", &FlowModelParams::memory_fade, 1},
-                        {"keep_share", &FlowModelParams::keep_share, 1.01}};
+                        {"keep_share", &FlowModelParams::keep_share, 1.01},
+                        {"new_motion_share", &FlowModelParams::new_motion_share, -0.1},
+                        {"new_core", &FlowModelParams::new_core, 2}};
   for (const Case& c : cases) {
     FlowModelParams p;
     p.*c.member = c.bad;
