@@ -15,8 +15,10 @@ struct FlowModelParams {
   // The object is then followed at its own scale: the integer scale that makes it about this many
   // work pixels (its area at the start). Its work — its motion, its cut, its colours — is within
   // a few times its area around it, so a large object costs no more than a small one, and a
-  // small one in a large frame no more than in a small one.
-  double object_pixels = 20000;
+  // small one in a large frame no more than in a small one. davis-dev (the bench's quick loop,
+  // J from mask / box / click): 10 000 px 69.3 / 61.1 / 57.2, 14 000 69.1 / 61.8 / 59.0,
+  // 20 000 69.1 / 62.3 / 59.3, at 2.6-5.4, 3.1-5.6 and 3.1-6.7 M work units a median frame.
+  double object_pixels = 14000;
   // The picture's motion is measured at the coarsest level of DIS's pyramid (no coarser than its
   // ultrafast preset's, a quarter of the working frame) at which the object still spans this
   // many pixels (√area): a smaller object is a speck there and is carried along with what

@@ -112,9 +112,10 @@ class ObjectModel {
   virtual Veto veto(FrameEvidence& ev, const Features& f, const Track& track);
   // The tracker's verdict on this frame's observation: a model learns from accepted frames only.
   virtual void settle(Verdict verdict) = 0;
-  // The frames are now sx × sy times as large. False when the model cannot follow its object
-  // across the change: the tracker then starts it again within the object's last box.
-  virtual bool rescale(double sx, double sy) = 0;
+  // The frames are now sx × sy times as large, width × height. False when the model cannot
+  // follow its object across the change: the tracker then starts it again within the object's
+  // last box.
+  virtual bool rescale(double sx, double sy, int width, int height) = 0;
   // The frames' colours are read another way (another format, same size): what the model learned
   // of the colours no longer holds. False as rescale().
   virtual bool relearn() = 0;

@@ -140,6 +140,25 @@ bool DenseFlow::measure(const cv::Mat& gray, int level, bool halve, const cv::Re
   return true;
 }
 
+void DenseFlow::resample(cv::Size size) {
+  if (last_.empty() || last_valid_.empty()) {
+    reset();
+    return;
+  }
+  const double rx = static_cast<double>(size.width) / last_.cols;
+  const double ry = static_cast<double>(size.height) / last_.rows;
+  cv::Mat resized;
+  cv::resize(last_, resized, size, 0, 0, rx < 1 ? cv::INTER_AREA : cv::INTER_LINEAR);
+  // Only the part that held the last frame still does (shrunk inward: its edge pixels mixed).
+  const cv::Rect valid(cv::Point(static_cast<int>(std::ceil(last_valid_.x * rx)),
+                                 static_cast<int>(std::ceil(last_valid_.y * ry))),
+                       cv::Point(static_cast<int>(last_valid_.br().x * rx),
+                                 static_cast<int>(last_valid_.br().y * ry)));
+  reset();
+  last_ = resized;
+  last_valid_ = valid & cv::Rect({0, 0}, size);
+}
+
 void DenseFlow::reset() {
   // A new DIS too: OpenCV 4.6's keeps buffers of the sizes it has seen, and one reused on frames
   // of another size after a few of a smaller one crashed in its parallel loop (tests/gst's flow

@@ -36,6 +36,9 @@ class DenseFlow {
   const cv::Rect& measured() const { return measured_; }
   // Forgets the last frame: the next compute() starts afresh.
   void reset();
+  // The frames are now `size` (another scale of the same picture): the last frame is resampled to
+  // it, so that the next compute() measures the motion against it.
+  void resample(cv::Size size);
 
  private:
   // DIS on `region` of the frame read (halved or not), the field brought up into flow_.

@@ -41,7 +41,7 @@ class ColourMixture {
              Histogram& out) const;
 
   Histogram object_, surroundings_, first_object_, first_surroundings_;
-  Histogram first_ratio_;  // log(first_object_ / first_surroundings_) per colour
+  Histogram first_ratio_;       // log(first_object_ / first_surroundings_) per colour
   Histogram in_, out_, ratio_;  // one frame's counts; its log-likelihood ratio per colour
 };
 

@@ -42,6 +42,8 @@ void FlowSegmenter::start(const WorkImages& whole, const cv::Mat& whole_inside,
   fullest_ = area_ = cv::sum(last_(box_))[0];
   colours_.start(whole.bgr, whole_inside);
   local_colours_.forget();
+  outlined_ = outlined;
+  relearn_ = false;
   if (outlined && p.local_colour_weight > 0) {
     const cv::Rect near = colour_ring(p);
     local_colours_.learn(img.bgr, near, mask_(near), around_, p.local_colour_cells);
@@ -49,6 +51,47 @@ void FlowSegmenter::start(const WorkImages& whole, const cv::Mat& whole_inside,
   flow_.reset();
   flow_level_ = flow_level(area_, DenseFlow::kPresetLevel, p.flow_span);
   flow_.compute(img.gray, flow_level_, cv::Rect(), img.filled);
+}
+
+void FlowSegmenter::relearn_on(const WorkImages& img, const FlowModelParams& p) {
+  relearn_ = false;
+  const double area = cv::countNonZero(inside_(prior_box_));
+  if (area < 1) return;
+  const int ring = std::max(1, static_cast<int>(p.colour_ring * std::sqrt(area)));
+  const cv::Rect near = square_ring(inside_, ring, ring_count_, around_);
+  colours_.start(img.bgr(near), inside_(near));
+  local_colours_.forget();
+  if (outlined_ && p.local_colour_weight > 0)
+    local_colours_.learn(img.bgr, near, inside_(near), around_, p.local_colour_cells);
+}
+
+void FlowSegmenter::resample(double rx, double ry, cv::Size size, int scale) {
+  if (last_.empty()) return;
+  const auto resized = [&](cv::Mat& m, int interpolation) {
+    if (m.empty()) return;
+    cv::Mat out;
+    cv::resize(m, out, size, 0, 0, interpolation);
+    m = out;
+  };
+  resized(mask_, cv::INTER_NEAREST);
+  resized(last_, cv::INTER_LINEAR);
+  resized(memory_, cv::INTER_LINEAR);
+  prior_ = cv::Mat::zeros(size, CV_32F);
+  prior_box_ = cv::Rect();
+  box_ = support_of(last_, support_);
+  memory_box_ = support_of(memory_, support_);
+  if (box_.empty()) {
+    forget(false);
+    return;
+  }
+  area_ = cv::sum(last_(box_))[0];
+  fullest_ *= rx * ry;
+  split_.object.x *= static_cast<float>(rx), split_.object.y *= static_cast<float>(ry);
+  split_.surroundings.x *= static_cast<float>(rx), split_.surroundings.y *= static_cast<float>(ry);
+  split_.separation *= static_cast<float>(std::sqrt(rx * ry));
+  local_colours_.rescale(rx, ry);
+  flow_.resample(size);
+  scale_ = scale;
 }
 
 void FlowSegmenter::forget(bool colours) {
@@ -75,6 +118,7 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
     forget(false);
     return false;
   }
+  if (relearn_) relearn_on(img, p);
   const int blur = static_cast<int>(p.prior_spread * std::sqrt(area)) | 1;
   reach_ = reach_of_prior(2 * blur);
   weigh_evidence(img, blur, p);

@@ -55,6 +55,17 @@ class FlowSegmenter {
   double evidence_support() const { return evidence_; }
   // Forgets the silhouette; with `colours` false the colours too.
   void forget(bool colours = true);
+  // The work frame is now rx × ry times as large, of `size`, at `scale` (a new frame size, or
+  // another scale for an object that grew or shrank): what the segmenter keeps of the object —
+  // its silhouettes, its motion, the last frame's picture — is resampled to it, and it follows
+  // on.
+  void resample(double rx, double ry, cv::Size size, int scale);
+  // The frames' colours are read another way (another pixel format): the next follow() learns
+  // the object's colours and its surroundings' anew from where the motion carries the silhouette
+  // on its frame, before it cuts.
+  void relearn_colours() { relearn_ = true; }
+  // The last silhouette's area, work px.
+  double area() const { return area_; }
 
  private:
   // The prior: the last silhouette carried along the flow, with the remembered one moved by the
@@ -78,6 +89,8 @@ class FlowSegmenter {
   // The pixels of reach_ (CV_8U) whose motion counts less (FlowModelParams::new_motion_share);
   // empty when none.
   const cv::Mat& damp_new_pixels(const WorkImages& img, const FlowModelParams& p);
+  // Learns the colours anew (relearn_colours()) from the prior's object, inside_, on `img`.
+  void relearn_on(const WorkImages& img, const FlowModelParams& p);
   // Follows the colours of the silhouette and of a ring around it.
   void learn_colours(const WorkImages& img, const FlowModelParams& p);
   // The silhouette's square ring (`colour_ring` × √area wide) into `around_`; its box returned.
@@ -94,7 +107,9 @@ class FlowSegmenter {
   ColourMixture colours_;
   LocalColours local_colours_;  // learned only from an outlined first silhouette, then followed
   int scale_ = 1;
-  double area_ = 0;  // the last silhouette's, work px
+  bool outlined_ = false;  // the first silhouette was outlined: the local colours are learned
+  bool relearn_ = false;   // relearn_colours()
+  double area_ = 0;        // the last silhouette's, work px
   // The images are the work frame's size, zero outside their boxes: a frame's work is within
   // the boxes, not the whole frame.
   cv::Mat last_;         // the last silhouette, CV_32F 0 or 1
@@ -112,7 +127,7 @@ class FlowSegmenter {
   cv::Mat prior_odds_;   // the prior's log-odds within reach_
   double evidence_ = 0;  // evidence_support()
   cv::Mat map_, support_, log_odds_, inside_, labels_, ring_count_, around_;  // buffers
-  cv::Mat new_pixels_;  // buffer of damp_new_pixels()
+  cv::Mat new_pixels_;        // buffer of damp_new_pixels()
   std::vector<double> held_;  // the prior each piece holds
 };
 

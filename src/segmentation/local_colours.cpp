@@ -92,4 +92,12 @@ void LocalColours::add_evidence(const cv::Mat& bgr, const cv::Rect& where, cv::P
   }
 }
 
+void LocalColours::rescale(double rx, double ry) {
+  const int x0 = static_cast<int>(std::lround(box_.x * rx));
+  const int y0 = static_cast<int>(std::lround(box_.y * ry));
+  box_ = cv::Rect(cv::Point(x0, y0),
+                  cv::Point(std::max(x0 + 1, static_cast<int>(std::lround(box_.br().x * rx))),
+                            std::max(y0 + 1, static_cast<int>(std::lround(box_.br().y * ry)))));
+}
+
 }  // namespace projtrack

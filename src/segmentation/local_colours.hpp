@@ -28,6 +28,8 @@ class LocalColours {
                     cv::Mat& log_odds);
   bool learned() const { return cells_ > 0; }
   void forget() { cells_ = 0; }
+  // The work frame is now rx × ry times as large: the grid follows.
+  void rescale(double rx, double ry);
 
   static constexpr float kMostNats = 3;
 

@@ -60,7 +60,7 @@ void Tracker::rescale(int width, int height, int new_width, int new_height) {
   const double sx = static_cast<double>(new_width) / width;
   const double sy = static_cast<double>(new_height) / height;
   impl_->state.rescale(sx, sy, new_width, new_height);
-  if (!impl_->model->rescale(sx, sy)) impl_->state.restart_within_last_box();
+  if (!impl_->model->rescale(sx, sy, new_width, new_height)) impl_->state.restart_within_last_box();
 }
 
 SilhouetteMask Tracker::silhouette() const {

@@ -80,7 +80,7 @@ void AppearanceObjectModel::settle(Verdict verdict) {
   step_ = Step::None;
 }
 
-bool AppearanceObjectModel::rescale(double sx, double sy) {
+bool AppearanceObjectModel::rescale(double sx, double sy, int, int) {
   // The silhouette follows and its colours stay: the next frame goes on as any other (a relearn
   // within the last box would learn the background there when the picture changed with the
   // size, as a clip joined to another). Without a silhouette to follow, the track relearns

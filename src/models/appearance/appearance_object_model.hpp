@@ -17,7 +17,7 @@ class AppearanceObjectModel final : public ObjectModel {
   Observation follow(FrameEvidence& ev, const Track& track) override;
   Veto veto(FrameEvidence& ev, const Features& f, const Track& track) override;
   void settle(Verdict verdict) override;
-  bool rescale(double sx, double sy) override;
+  bool rescale(double sx, double sy, int width, int height) override;
   bool relearn() override;
   void forget(Forget what) override;
   SilhouetteMask silhouette(int frame_width, int frame_height) const override;

@@ -77,7 +77,7 @@ void EdgesObjectModel::settle(Verdict verdict) {
   if (verdict == Verdict::Accepted) following_ = true;
 }
 
-bool EdgesObjectModel::rescale(double, double) {
+bool EdgesObjectModel::rescale(double, double, int, int) {
   acquisition_.reset();  // its motion history is of frames of the old size
   return true;
 }

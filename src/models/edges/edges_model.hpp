@@ -15,7 +15,7 @@ class EdgesObjectModel final : public ObjectModel {
   Observation start(FrameEvidence& ev, const StartRequest& request, const Track& track) override;
   Observation follow(FrameEvidence& ev, const Track& track) override;
   void settle(Verdict verdict) override;
-  bool rescale(double sx, double sy) override;
+  bool rescale(double sx, double sy, int width, int height) override;
   bool relearn() override { return true; }  // the edges read no colour
   void forget(Forget what) override;
 

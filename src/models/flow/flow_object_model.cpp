@@ -80,7 +80,8 @@ Observation FlowObjectModel::start(FrameEvidence& ev, const StartRequest& reques
   const double area =
       masked ? cv::countNonZero(*request.mask)
              : cv::countNonZero(inside_) * static_cast<double>(whole->scale) * whole->scale;
-  scale_ = object_scale(area, ev.tp.flow.object_pixels);
+  object_pixels_ = ev.tp.flow.object_pixels;
+  scale_ = object_scale(area, object_pixels_);
   resample_mask(masked ? *request.mask : inside_, work_size(ev.width(), ev.height(), scale_),
                 object_inside_);
   if (cv::countNonZero(object_inside_) == 0)
@@ -95,6 +96,7 @@ Observation FlowObjectModel::start(FrameEvidence& ev, const StartRequest& reques
 
 Observation FlowObjectModel::follow(FrameEvidence& ev, const Track&) {
   starting_ = false;
+  follow_scale(ev);
   const WorkImages* img = ev.images(scale_, segmenter_.images_needed(ev.tp.flow));
   if (!img || !pay(ev.budget, segmenter_.follow_cost(*img, ev.tp.flow)))
     return Observation::stopped();
@@ -102,6 +104,19 @@ Observation FlowObjectModel::follow(FrameEvidence& ev, const Track&) {
     return Observation::missing(
         "nothing of the object is left where the picture's motion carried it");
   return observed(false);
+}
+
+void FlowObjectModel::follow_scale(const FrameEvidence& ev) {
+  // An object that grew or shrank to half or twice its area at its scale is followed at the scale
+  // its size asks for now (hysteresis: no switch back and forth for an object near the limit).
+  object_pixels_ = ev.tp.flow.object_pixels;
+  const double area = segmenter_.area() * scale_ * scale_;
+  const int scale = object_scale(area, object_pixels_);
+  const double ratio = static_cast<double>(scale) / scale_;
+  if (ratio * ratio < 2 && ratio * ratio > 0.5) return;
+  const double r = static_cast<double>(scale_) / scale;
+  segmenter_.resample(r, r, work_size(ev.width(), ev.height(), scale), scale);
+  scale_ = scale;
 }
 
 Veto FlowObjectModel::veto(FrameEvidence&, const Features&, const Track&) {
@@ -132,13 +147,28 @@ void FlowObjectModel::settle(Verdict verdict) {
   starting_ = false;
 }
 
-bool FlowObjectModel::rescale(double, double) { return relearn(); }
+bool FlowObjectModel::rescale(double sx, double sy, int width, int height) {
+  // The silhouette and the last picture follow the frame to its new size, at the scale the
+  // object's new size asks for; the colours stay (a resize changes none).
+  finder_.forget_motion();
+  if (!segmenter_.tracking()) return false;
+  const double area = segmenter_.area() * scale_ * scale_ * sx * sy;
+  const int scale = object_scale(area, object_pixels_);
+  segmenter_.resample(sx * scale_ / scale, sy * scale_ / scale, work_size(width, height, scale),
+                      scale);
+  scale_ = scale;
+  return segmenter_.tracking();
+}
 
 bool FlowObjectModel::relearn() {
-  segmenter_.forget();
+  // The silhouette stays where it is; its colours and its surroundings' are learned anew on the
+  // next frame, where the motion carries it (the element's caps, Python's frames: colour to gray).
   finder_.object.forget();
   finder_.forget_motion();
-  return false;
+  usual_support_ = 0;
+  if (!segmenter_.tracking()) return false;
+  segmenter_.relearn_colours();
+  return true;
 }
 
 void FlowObjectModel::forget(Forget) {

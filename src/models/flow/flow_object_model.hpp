@@ -21,7 +21,7 @@ class FlowObjectModel final : public ObjectModel {
   Observation follow(FrameEvidence& ev, const Track& track) override;
   Veto veto(FrameEvidence& ev, const Features& f, const Track& track) override;
   void settle(Verdict verdict) override;
-  bool rescale(double sx, double sy) override;
+  bool rescale(double sx, double sy, int width, int height) override;
   bool relearn() override;
   void forget(Forget what) override;
   SilhouetteMask silhouette(int frame_width, int frame_height) const override;
@@ -35,6 +35,8 @@ class FlowObjectModel final : public ObjectModel {
   // silhouette (inside_, when `start` found it); the one the others agree with most into
   // inside_.
   void choose_at_point(const WorkImages& img, Point2i point, AppearanceStart& start);
+  // The object followed at the scale its size asks for (FlowModelParams::object_pixels).
+  void follow_scale(const FrameEvidence& ev);
   // The segmenter's silhouette as the estimator reads it (a Mask of its box).
   Observation observed(bool resumed);
 
@@ -45,7 +47,8 @@ class FlowObjectModel final : public ObjectModel {
   cv::Mat inside_;           // the first silhouette, at the start's working scale
   cv::Mat object_inside_;    // the same at the object's scale
   int scale_ = 1;            // the object's scale (FlowModelParams::object_pixels)
-  bool starting_ = false;    // this frame's observation is a start
+  double object_pixels_ = FlowModelParams{}.object_pixels;  // the last frame's
+  bool starting_ = false;                                   // this frame's observation is a start
   // The evidence (FlowSegmenter::evidence_support) of the track's accepted frames, followed at
   // kSupportRate; a frame with less than kLeastSupport of it is refused (veto()). On davis-dev the
   // least frame of a track held 0.43 of its median or more (drift-chicane's car in smoke), a
