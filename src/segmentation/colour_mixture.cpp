@@ -56,7 +56,7 @@ void ColourMixture::learn(const cv::Mat& bgr, const cv::Mat& inside, const cv::M
   }
 }
 
-void ColourMixture::add_evidence(const cv::Mat& bgr, double first_share, cv::Mat& log_odds) {
+void ColourMixture::add_evidence(const cv::Mat& bgr, double first_share, cv::Mat& log_odds) const {
   if (!learned()) return;
   // One logarithm a colour, not a pixel.
   const auto a = static_cast<float>(first_share), b = 1 - a;

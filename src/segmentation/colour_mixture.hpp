@@ -23,7 +23,7 @@ class ColourMixture {
   void learn(const cv::Mat& bgr, const cv::Mat& inside, const cv::Mat& around, double rate);
   // Adds each pixel's log-likelihood ratio of object against surroundings to `log_odds`
   // (CV_32F): the mean of the first and the followed models, each `first_share` and the rest.
-  void add_evidence(const cv::Mat& bgr, double first_share, cv::Mat& log_odds);
+  void add_evidence(const cv::Mat& bgr, double first_share, cv::Mat& log_odds) const;
   bool learned() const { return !object_.empty(); }
   // The first frame's log-likelihood ratio of object against surroundings for colour `c`
   // (learned() must hold): the anchor that does not drift.
@@ -41,8 +41,9 @@ class ColourMixture {
              Histogram& out) const;
 
   Histogram object_, surroundings_, first_object_, first_surroundings_;
-  Histogram first_ratio_;       // log(first_object_ / first_surroundings_) per colour
-  Histogram in_, out_, ratio_;  // one frame's counts; its log-likelihood ratio per colour
+  Histogram first_ratio_;    // log(first_object_ / first_surroundings_) per colour
+  Histogram in_, out_;       // one frame's counts
+  mutable Histogram ratio_;  // add_evidence()'s log-likelihood ratio per colour
 };
 
 }  // namespace projtrack

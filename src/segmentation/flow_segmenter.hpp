@@ -66,6 +66,9 @@ class FlowSegmenter {
   void relearn_colours() { relearn_ = true; }
   // The last silhouette's area, work px.
   double area() const { return area_; }
+  // The object's colours against its surroundings' (kept after forget(false): the object lost
+  // is looked for by them).
+  const ColourMixture& colours() const { return colours_; }
 
  private:
   // The prior: the last silhouette carried along the flow, with the remembered one moved by the

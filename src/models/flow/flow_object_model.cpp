@@ -71,7 +71,9 @@ Observation FlowObjectModel::start(FrameEvidence& ev, const StartRequest& reques
   // A mask or a box bounds the first silhouette; a point does not.
   const bool outlined =
       request.from == StartRequest::From::Mask || request.from == StartRequest::From::Box;
-  const AppearanceStart start = first_silhouette(ev, request, track, *whole);
+  const AppearanceStart start = request.from == StartRequest::From::Nothing
+                                    ? search(ev, track, *whole)
+                                    : first_silhouette(ev, request, track, *whole);
   if (!start.found) {
     if (ev.budget.ran_out() || ev.budget.interrupted()) return Observation::stopped();
     return Observation::missing(start.why);
@@ -138,12 +140,17 @@ Veto FlowObjectModel::veto(FrameEvidence&, const Features&, const Track&) {
 void FlowObjectModel::settle(Verdict verdict) {
   // A start not taken leaves nothing to follow.
   if (starting_ && verdict != Verdict::Accepted) segmenter_.forget(false);
+  if (starting_ && verdict == Verdict::Accepted) {
+    usual_support_ = 0;
+    searched_ = 0;
+    moving_.reset();  // its frames are of before this track: a later search starts afresh
+    last_searched_.release();
+  }
   if (!starting_ && verdict == Verdict::Accepted) {
     const double support = segmenter_.evidence_support();
     usual_support_ =
         usual_support_ > 0 ? (1 - kSupportRate) * usual_support_ + kSupportRate * support : support;
   }
-  if (starting_) usual_support_ = 0;
   starting_ = false;
 }
 
@@ -171,11 +178,15 @@ bool FlowObjectModel::relearn() {
   return true;
 }
 
-void FlowObjectModel::forget(Forget) {
-  segmenter_.forget();
+void FlowObjectModel::forget(Forget what) {
+  // A track dropped keeps the object's colours to find it again (Forget::Position).
+  segmenter_.forget(what == Forget::Everything);
   finder_.object.forget();
   finder_.forget_motion();
-  finder_.searched = 0;
+  moving_.reset();
+  last_searched_.release();
+  searched_ = 0;
+  usual_support_ = 0;
 }
 
 SilhouetteMask FlowObjectModel::silhouette(int frame_width, int frame_height) const {

@@ -8,6 +8,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "acquisition/moving_object.hpp"
 #include "models/appearance/appearance_memory.hpp"
 #include "models/object_model.hpp"
 #include "segmentation/flow_segmenter.hpp"
@@ -37,16 +38,33 @@ class FlowObjectModel final : public ObjectModel {
   void choose_at_point(const WorkImages& img, Point2i point, AppearanceStart& start);
   // The object followed at the scale its size asks for (FlowModelParams::object_pixels).
   void follow_scale(const FrameEvidence& ev);
+  // A start nobody pointed at (flow_search.cpp), into inside_ (`whole`'s size): by
+  // TrackerParams::acquisition, the object at the frame's centre, or the object lost before where
+  // its colours are near where it was lost and something moves, else the object that moves apart
+  // from the picture's own motion (acquisition/moving_object).
+  AppearanceStart search(FrameEvidence& ev, const Track& track, const WorkImages& whole);
+  // The object lost before, by its colours: a piece of them near where it was lost, of about its
+  // area, that moved since the last frame searched (a static patch of its colours is not it).
+  bool find_by_colours(FrameEvidence& ev, const Track& track, const WorkImages& whole,
+                       const cv::Mat& moved);
+  // Where `gray` (the whole work frame) changed since the last frame searched, beyond its noise,
+  // into moved_; false on the first frame searched.
+  bool changed_since_last(const cv::Mat& gray);
   // The segmenter's silhouette as the estimator reads it (a Mask of its box).
   Observation observed(bool resumed);
 
   FlowSegmenter segmenter_;
-  AppearanceMemory finder_;  // how a point or nothing finds the object's first silhouette
-  Mask first_, found_;       // the finder's buffers
-  Mask silhouette_;          // this frame's silhouette, as the estimator reads it
-  cv::Mat inside_;           // the first silhouette, at the start's working scale
-  cv::Mat object_inside_;    // the same at the object's scale
-  int scale_ = 1;            // the object's scale (FlowModelParams::object_pixels)
+  AppearanceMemory finder_;    // how a point finds the object's first silhouette
+  MovingObjectFinder moving_;  // the moving object, when nobody points at one
+  int searched_ = 0;           // frames searched since the object was lost (or forgotten)
+  // Buffers of the search: the last frame searched, what changed since, the colours' log-odds,
+  // the pieces.
+  cv::Mat last_searched_, moved_, colour_odds_, pieces_, piece_stats_, piece_centres_;
+  Mask first_, found_;     // the finder's buffers
+  Mask silhouette_;        // this frame's silhouette, as the estimator reads it
+  cv::Mat inside_;         // the first silhouette, at the start's working scale
+  cv::Mat object_inside_;  // the same at the object's scale
+  int scale_ = 1;          // the object's scale (FlowModelParams::object_pixels)
   double object_pixels_ = FlowModelParams{}.object_pixels;  // the last frame's
   bool starting_ = false;                                   // this frame's observation is a start
   // The evidence (FlowSegmenter::evidence_support) of the track's accepted frames, followed at
