@@ -62,12 +62,13 @@ Veto Tracker::Impl::judge(FrameEvidence& ev, const Features& f, const Observatio
   Veto v;
   if (!t.last) {
     v.why = why_implausible(f, w, h, ev.tp, origin);
-  } else if (starting) {
+  } else if (starting || t.across_change) {
     // A start that goes on a track whose last estimate was kept (a rescale or a relearn: the
     // model starts again within the last box) continues it: judged against the last estimate,
     // so a start that took a sliver of the object is no continuation that every next frame then
-    // "jumps" from. Its colours learned anew, it may take another part of the object, so its
-    // area may change by leak_factor² rather than leak_factor.
+    // "jumps" from. Its colours learned anew, it may take another part of the object, and across
+    // a new size or format the picture itself may have changed (a clip joined to another), so
+    // its area may change by leak_factor² rather than leak_factor.
     TrackerParams restart = ev.tp;
     restart.leak_factor = ev.tp.leak_factor * ev.tp.leak_factor;
     v.why = why_refused(f, w, h, restart, &*t.last, HUGE_VAL, origin);
