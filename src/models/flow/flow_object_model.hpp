@@ -1,9 +1,9 @@
 // The flow model (ObjectModelKind::Flow): the whole object as it moves. Its last silhouette is
 // carried along the picture's dense motion and cut from its surroundings where that prior, the
 // colours of both and the motion of both agree (segmentation/flow_segmenter). It starts from the
-// user's mask as it is, from GrabCut's object in the user's box (segmentation/box_start), and from
-// a point or nothing from the appearance model's first silhouette checked against GrabCut's
-// candidates around the point (segmentation/point_start).
+// user's mask as it is, from the object cut out of the user's box (segmentation/box_start) or
+// around the user's point (segmentation/point_start), and with no start from the appearance
+// model's first silhouette.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -11,6 +11,7 @@
 #include "models/appearance/appearance_memory.hpp"
 #include "models/object_model.hpp"
 #include "segmentation/flow_segmenter.hpp"
+#include "segmentation/start_cut.hpp"
 
 namespace projtrack {
 
@@ -27,19 +28,16 @@ class FlowObjectModel final : public ObjectModel {
   SilhouetteMask silhouette(int frame_width, int frame_height) const override;
 
  private:
-  // The first silhouette, into inside_ (the work images' size): the user's mask, GrabCut in the
-  // user's box, or for a point or nothing the appearance model's start.
+  // The first silhouette, into inside_ (the work images' size): the user's mask, the object cut
+  // out of the user's box or around the user's point, or with no start the appearance model's.
   AppearanceStart first_silhouette(FrameEvidence& ev, const StartRequest& request,
                                    const Track& track, const WorkImages& img);
-  // A point start: GrabCut's candidates around the point against the appearance model's first
-  // silhouette (inside_, when `start` found it); the one the others agree with most into
-  // inside_.
-  void choose_at_point(const WorkImages& img, Point2i point, AppearanceStart& start);
   // The segmenter's silhouette as the estimator reads it (a Mask of its box).
   Observation observed(bool resumed);
 
   FlowSegmenter segmenter_;
-  AppearanceMemory finder_;  // how a point or nothing finds the object's first silhouette
+  CutWorkspace cut_work_;    // the box's and the point's cuts (kept: their buffers are reused)
+  AppearanceMemory finder_;  // how a start with no seed finds the object's first silhouette
   Mask first_, found_;       // the finder's buffers
   Mask silhouette_;          // this frame's silhouette, as the estimator reads it
   cv::Mat inside_;           // the first silhouette, at the start's working scale
