@@ -26,10 +26,11 @@ struct FlowModelParams {
   // from the first mask 66.2 → 69.9, at about 1.3 × the cost a frame). 0: always the preset's
   // level.
   double flow_span = 32;
-  // A start from a box: GrabCut reads the box at about ½, 1 and 2 × this many pixels (not at
-  // the working scale: a cut's grain is relative to the box), and the object is where at least
-  // half of the cuts that did not collapse agree (segmentation/box_start).
-  double box_pixels = 20000;
+  // A start from a box cuts the box at about this many cells, whatever the frame's or the box's
+  // size (segmentation/box_start): a cut's grain is relative to the box, and its work is the
+  // cells'. 4000 (about 3 ms, 2M work units): 3000 to 8000 measured alike on davis-dev's first
+  // silhouettes, and the work grows faster than the cells.
+  double box_pixels = 4000;
   // How far the object may have moved beyond what the flow says: the carried silhouette is
   // blurred this share of √area wide before it becomes the prior.
   double prior_spread = 0.2;

@@ -23,7 +23,7 @@ class FlowSegmenter {
   // A new object: `inside` (CV_8U at the work size, non-zero on the object) on `img` (holding at
   // least images_needed_at_start(inside)); the frame's colours against the object's are learned
   // on `whole` (the whole frame, at any scale), where `whole_inside` (its size) is the object.
-  // `outlined`: the silhouette was bounded by an outline of the object (a mask, or GrabCut within
+  // `outlined`: the silhouette was bounded by an outline of the object (a mask, or the cut within
   // a box), and the colours near each part of it are learned too (LocalColours); from a point,
   // where the first silhouette is a guess at the object's extent, they would hold the background
   // that guess took in as the object's.

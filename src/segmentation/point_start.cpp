@@ -1,84 +1,114 @@
 #include "segmentation/point_start.hpp"
 
 #include <algorithm>
-#include <opencv2/imgproc.hpp>
+#include <cmath>
+#include <utility>
+#include <vector>
 
-#include "segmentation/grab_cut.hpp"
+#include "segmentation/cut_pieces.hpp"
+#include "segmentation/cut_problem.hpp"
+#include "segmentation/start_work.hpp"
 
 namespace projtrack {
 
 namespace {
 
-constexpr int kRounds = 3;  // GrabCut's iterations, as in the box start
-// The certain disc's radius, a share of the half-side. With only the point's 2 px certain, the
-// cuts collapsed to the point on most of davis-dev (the goat at every size, the dog at all but
-// the largest): the object's mixture was learned from the probable ellipse, mostly background.
-constexpr double kCertain = 0.1;
-constexpr double kCollapsed = 0.02;  // a cut keeping less of its square has collapsed
+constexpr int kSquares = 9;
+constexpr double kSmallest = 0.02, kLargest = 1.0;  // half-sides, of the frame's smaller side
+constexpr double kCore = 0.5;     // the object expected within this share of the half-side
+constexpr double kContext = 1.0;  // the surroundings: the square grown by its side a side
+constexpr double kCoarseCells = 400, kFineCells = 4000;
+constexpr int kFinalists = 2;
+constexpr CutSettings kCoarse{2, false, 2};
+constexpr CutSettings kFine{2, true, 2};
 
-// GrabCut's labels for the square around `p`: certain background outside it, probable object in
-// the ellipse half its size, certain object in the disc around the point.
-cv::Mat seed_labels(cv::Size size, cv::Point p, int half) {
-  cv::Mat labels(size, CV_8U, cv::Scalar(cv::GC_BGD));
-  const cv::Rect square =
-      cv::Rect(p.x - half, p.y - half, 2 * half + 1, 2 * half + 1) & cv::Rect({0, 0}, size);
-  labels(square).setTo(cv::GC_PR_BGD);
-  cv::Mat core = cv::Mat::zeros(size, CV_8U);
-  cv::ellipse(core, p, {std::max(1, half / 2), std::max(1, half / 2)}, 0, 0, 360, 255, cv::FILLED);
-  labels.setTo(cv::GC_PR_FGD, core & (labels == cv::GC_PR_BGD));
-  const int certain = std::max(2, static_cast<int>(kCertain * half));
-  cv::circle(labels, p, certain, cv::GC_FGD, cv::FILLED);
-  return labels;
+struct Square {
+  double score = -1;  // the outline's: contrast × (1 - touch)
+  int half = 0;
+};
+
+CutHypothesis square_hypothesis(const Point2i& point, int half, double cells, int width,
+                                int height) {
+  CutHypothesis h;
+  h.box = cv::Rect(point.x - half, point.y - half, 2 * half + 1, 2 * half + 1) &
+          cv::Rect(0, 0, width, height);
+  h.point = &point;
+  h.pixels = cells;
+  h.context = kContext;
+  h.centre = {point.x + 0.5, point.y + 0.5};
+  h.radii = {kCore * half, kCore * half};
+  return h;
 }
 
-// Intersection over union of two CV_8U masks.
-double iou(const cv::Mat& a, const cv::Mat& b) {
-  const int both = cv::countNonZero(a & b);
-  const int either = cv::countNonZero(a | b);
-  return either > 0 ? static_cast<double>(both) / either : 0;
+// The square of `half` cut at `cells` with `settings` into `problem` and `cut`; its score, or -1
+// when it holds nothing to cut. False when the budget stopped it.
+bool cut_square(const ColorView& frame, const Point2i& point, int half, double cells,
+                const CutSettings& settings, CutWorkspace& ws, WorkBudget& budget,
+                CutProblem& problem, CutResult& cut, double& score) {
+  const int width = frame.luma.width, height = frame.luma.height;
+  const CutHypothesis h = square_hypothesis(point, half, cells, width, height);
+  if (!pay(budget, problem_cost(h, width, height))) return false;
+  make_problem(frame, h, problem);
+  score = -1;
+  if (!nothing_to_cut(problem).empty()) return true;
+  if (!cut_object(problem, settings, ws, budget, cut)) return false;
+  score = cut.contrast * (1 - cut.touch);
+  return true;
 }
 
 }  // namespace
 
-std::vector<cv::Mat> objects_at_point(const WorkImages& img, cv::Point p,
-                                      const std::vector<int>& halves) {
-  std::vector<cv::Mat> found;
-  const cv::Rect frame({0, 0}, img.bgr.size());
-  for (const int half : halves) {
-    cv::Mat labels = seed_labels(img.bgr.size(), p, half);
-    // GrabCut reads the square and as much around it again: the background it learns from.
-    const int reach = 3 * half;
-    const cv::Rect roi = cv::Rect(p.x - reach, p.y - reach, 2 * reach + 1, 2 * reach + 1) & frame;
-    cv::Mat sub = labels(roi).clone();
-    // A cut that keeps hardly more than the disc it was told is certain has collapsed too: on a
-    // small frame the disc alone is over 2 % of the smallest square (the real set's white ellipse
-    // at half size: a 13-pixel start on an object of 13 000 pixels).
-    const int certain = cv::countNonZero(sub == cv::GC_FGD);
-    found.emplace_back();
-    if (!grab_cut(img.bgr(roi), sub, cv::Rect(), kRounds)) continue;  // one colour: nothing to cut
-    cv::Mat object = cv::Mat::zeros(img.bgr.size(), CV_8U), pieces;
-    object(roi).setTo(255, (sub & 1) != 0);
-    cv::connectedComponents(object, pieces, 8, CV_32S);
-    const int at = pieces.at<int>(p);
-    if (at > 0) object.setTo(0, pieces != at);
-    const double square = (2.0 * half + 1) * (2.0 * half + 1);
-    const double least = std::max(kCollapsed * square, 2.0 * certain);
-    if (at > 0 && cv::countNonZero(object) >= least) found.back() = object;
+StartOutcome object_at_point(const ColorView& frame, Point2i point, cv::Size out_size,
+                             CutWorkspace& ws, WorkBudget& budget, cv::Mat& inside) {
+  const int width = frame.luma.width, height = frame.luma.height;
+  if (!cv::Rect(0, 0, width, height).contains({point.x, point.y}))
+    return StartOutcome::nothing("the point lies outside the frame");
+  const double side = std::min(width, height);
+  std::vector<Square> squares;
+  CutProblem problem;
+  CutResult cut;
+  for (int k = 0; k < kSquares; ++k) {
+    const double t = static_cast<double>(k) / (kSquares - 1);
+    const int half = std::max(
+        1, static_cast<int>(std::lround(kSmallest * side * std::pow(kLargest / kSmallest, t))));
+    Square s;
+    s.half = half;
+    if (!cut_square(frame, point, half, kCoarseCells, kCoarse, ws, budget, problem, cut, s.score))
+      return StartOutcome::stopped();
+    if (s.score >= 0) squares.push_back(s);
   }
-  return found;
-}
-
-int most_agreed(const std::vector<cv::Mat>& candidates) {
-  int best = -1;
-  double most = -1;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (candidates[i].empty()) continue;
-    double agreement = 0;
-    for (std::size_t j = 0; j < candidates.size(); ++j)
-      if (j != i && !candidates[j].empty()) agreement += iou(candidates[i], candidates[j]);
-    if (agreement >= most) most = agreement, best = static_cast<int>(i);
+  if (squares.empty())
+    return StartOutcome::nothing(
+        "around the point, nothing to cut: no square around it holds "
+        "colours apart from its surroundings'");
+  // Best first; on a tie the smaller square.
+  std::stable_sort(squares.begin(), squares.end(),
+                   [](const Square& a, const Square& b) { return a.score > b.score; });
+  CutProblem best_problem;
+  CutResult best;
+  double best_score = -1;
+  // The best squares that still hold something to cut at the fine grain (a square whose coarse
+  // cells blurred a small ball into its surroundings may not).
+  int finalists = 0;
+  for (std::size_t f = 0; f < squares.size() && finalists < kFinalists; ++f) {
+    double score = -1;
+    if (!cut_square(frame, point, squares[f].half, kFineCells, kFine, ws, budget, problem, cut,
+                    score))
+      return StartOutcome::stopped();
+    if (score < 0) continue;
+    ++finalists;
+    if (score > best_score) {
+      best_score = score;
+      std::swap(best, cut);
+      std::swap(best_problem, problem);
+    }
   }
-  return best;
+  if (best_score < 0)
+    return StartOutcome::nothing("around the point, nothing to cut at the finer grain");
+  if (!pay(budget, write_cost(best_problem, width, height, out_size)))
+    return StartOutcome::stopped();
+  write_cut(best_problem, best, width, height, out_size, inside);
+  return StartOutcome::cut();
 }
 
 }  // namespace projtrack

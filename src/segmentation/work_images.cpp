@@ -25,26 +25,6 @@ cv::Mat plane_of(const std::uint8_t* c, int w, int h, const ChromaView& view, cv
   return gathered;
 }
 
-// The tables that read video range (ColorView) as full range: OpenCV's gray and YCrCb are full
-// range, and the flow model's flow and colour mixture were measured on full-range frames
-// (DAVIS through Python's BGR). Luma, then chroma.
-struct FullRangeTables {
-  cv::Mat luma, chroma;
-  FullRangeTables() : luma(1, 256, CV_8U), chroma(1, 256, CV_8U) {
-    for (int v = 0; v < 256; ++v) {
-      luma.at<std::uint8_t>(v) =
-          cv::saturate_cast<std::uint8_t>(std::lround((v - 16) * 255.0 / 219.0));
-      chroma.at<std::uint8_t>(v) =
-          cv::saturate_cast<std::uint8_t>(std::lround(128 + (v - 128) * 255.0 / 224.0));
-    }
-  }
-};
-
-const FullRangeTables& full_range_tables() {
-  static const FullRangeTables tables;
-  return tables;
-}
-
 // The frame's chroma within `part` (frame px) as Cr, Cb planes of `work` size, mapped by `range`
 // (a one-channel table: OpenCV's LUT of a three-channel table is not vectorised, 0.16 ms at
 // 427×240), into the two last channels of `ycrcb`.
@@ -67,6 +47,20 @@ void resample_chroma(const ColorView& frame, const cv::Rect& part, const cv::Mat
 }
 
 }  // namespace
+
+FullRangeTables::FullRangeTables() : luma(1, 256, CV_8U), chroma(1, 256, CV_8U) {
+  for (int v = 0; v < 256; ++v) {
+    luma.at<std::uint8_t>(v) =
+        cv::saturate_cast<std::uint8_t>(std::lround((v - 16) * 255.0 / 219.0));
+    chroma.at<std::uint8_t>(v) =
+        cv::saturate_cast<std::uint8_t>(std::lround(128 + (v - 128) * 255.0 / 224.0));
+  }
+}
+
+const FullRangeTables& full_range_tables() {
+  static const FullRangeTables tables;
+  return tables;
+}
 
 cv::Size work_size(int width, int height, int scale) {
   const int s = std::max(1, scale);

@@ -18,6 +18,15 @@ struct WorkImages {
   cv::Size size() const { return gray.size(); }
 };
 
+// The tables that read video range (ColorView) as full range: OpenCV's gray and YCrCb are full
+// range, and the flow model's flow and colours were measured on full-range frames (DAVIS through
+// Python's BGR). One row of 256 each: luma, then chroma.
+struct FullRangeTables {
+  FullRangeTables();
+  cv::Mat luma, chroma;
+};
+const FullRangeTables& full_range_tables();
+
 // The work size of a width × height frame at `scale`: ceil(width / scale) × ceil(height / scale).
 cv::Size work_size(int width, int height, int scale);
 // The frame pixels work rectangle `region` at `scale` covers, within the width × height frame.

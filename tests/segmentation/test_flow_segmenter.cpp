@@ -2,15 +2,11 @@
 // colours (one of them the background's) moving across a panning textured background.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
-#include <string>
 
-#include "segmentation/box_start.hpp"
 #include "segmentation/colour_mixture.hpp"
 #include "segmentation/flow_segmenter.hpp"
-#include "segmentation/point_start.hpp"
 
 namespace projtrack {
 namespace {
@@ -160,94 +156,6 @@ TEST(FlowSegmenter, WithoutASilhouetteThereIsNothingToFollow) {
   EXPECT_FALSE(segmenter.tracking());
 }
 
-TEST(ObjectInBox, GrabCutTakesTheObjectNotTheBox) {
-  const Scene scene;
-  cv::Mat bgr, truth;
-  scene.render(0, bgr, truth);
-  const cv::Rect b = cv::boundingRect(truth);
-  cv::Mat inside;
-  const Rect box{b.x - 4, b.y - 4, b.width + 8, b.height + 8};
-  EXPECT_EQ(object_in_box(bgr, box, inside), BoxStart::Cut);
-  // Its reddened half, which colour tells apart; nothing outside the box.
-  cv::Mat red = truth.clone();
-  red(cv::Rect(80, 0, 240, 240)).setTo(0);
-  EXPECT_GT(cv::countNonZero(inside & red), 0.8 * cv::countNonZero(red));
-  const cv::Rect taken = cv::boundingRect(inside);
-  EXPECT_TRUE((taken & cv::Rect(box.x, box.y, box.width, box.height)) == taken);
-  // A box too small to cut: the ellipse inscribed in it, said by the result.
-  EXPECT_EQ(object_in_box(bgr, {10, 10, 3, 3}, inside), BoxStart::Ellipse);
-  EXPECT_GT(cv::countNonZero(inside), 0);
-}
-
-TEST(ObjectInBox, ThreeResolutionsOfTheBoxVoteAtTheWorkingSize) {
-  const Scene scene;
-  cv::Mat bgr, truth;
-  scene.render(0, bgr, truth);
-  const cv::Rect b = cv::boundingRect(truth);
-  const Rect box{b.x - 4, b.y - 4, b.width + 8, b.height + 8};
-  cv::Mat red = truth.clone(), half_red;
-  red(cv::Rect(80, 0, 240, 240)).setTo(0);
-  cv::resize(red, half_red, {160, 120}, 0, 0, cv::INTER_NEAREST);
-  // The box read at about 800, 1 600 and 3 200 px (a tenth to two fifths of its 7 921), the vote at
-  // half the frame's size; and at its own resolution, never finer than the frame.
-  for (const double pixels : {1600.0, 1e6}) {
-    cv::Mat inside;
-    EXPECT_EQ(object_in_box(bgr, box, pixels, {160, 120}, inside), BoxStart::Cut) << pixels;
-    ASSERT_EQ(inside.size(), cv::Size(160, 120));
-    EXPECT_GT(cv::countNonZero(inside & half_red), 0.8 * cv::countNonZero(half_red)) << pixels;
-    const cv::Rect taken = cv::boundingRect(inside);
-    EXPECT_TRUE((taken & cv::Rect(box.x / 2 - 1, box.y / 2 - 1, box.width / 2 + 2,
-                                  box.height / 2 + 2)) == taken)
-        << pixels;
-  }
-  // A box too small to cut at any resolution: its ellipse, said by the result.
-  cv::Mat inside;
-  EXPECT_EQ(object_in_box(bgr, {10, 10, 3, 3}, 20000, {160, 120}, inside), BoxStart::Ellipse);
-  EXPECT_GT(cv::countNonZero(inside), 0);
-}
-
-TEST(ObjectInBox, OnlyTheCutsThatDidNotCollapseVote) {
-  // Three votes on a 12 × 12 mask: columns 0-5, 3-8 and an "ellipse" over columns 2-11.
-  std::array<cv::Mat, 3> votes;
-  for (auto& v : votes) v = cv::Mat::zeros(12, 12, CV_8U);
-  votes[0].colRange(0, 6).setTo(255);
-  votes[1].colRange(3, 9).setTo(255);
-  votes[2].colRange(2, 12).setTo(255);
-  const auto columns = [](const cv::Mat& m) {
-    std::string taken;
-    for (int x = 0; x < m.cols; ++x) taken += m.at<std::uint8_t>(6, x) ? '#' : '.';
-    return taken;
-  };
-  cv::Mat inside;
-  using B = BoxStart;
-  cuts_vote(votes, {B::Cut, B::Cut, B::Cut}, inside);
-  EXPECT_EQ(columns(inside), "..#######...");  // two of three
-  cuts_vote(votes, {B::Cut, B::Cut, B::Ellipse}, inside);
-  EXPECT_EQ(columns(inside), "#########...");  // either of the two cuts: at least half
-  cuts_vote(votes, {B::Ellipse, B::Cut, B::Ellipse}, inside);
-  EXPECT_EQ(columns(inside), "...######...");  // the one cut, not the ellipses' agreement
-  cuts_vote(votes, {B::Ellipse, B::Ellipse, B::Ellipse}, inside);
-  EXPECT_EQ(columns(inside), "..#######...");  // no cut: two of the three ellipses
-}
-
-TEST(ObjectInBox, TheBoxsCornersAreNotTheObject) {
-  // A red disc in a box whose corners hold blue marks seen nowhere else: the box's surroundings
-  // in its corners (a kite's lines), not part of the object.
-  const Scene scene;
-  cv::Mat bgr = scene.background(cv::Rect(0, 0, 320, 240)).clone();
-  cv::Mat disc = cv::Mat::zeros(240, 320, CV_8U);
-  cv::circle(disc, {160, 120}, 40, 255, cv::FILLED);
-  bgr.setTo(cv::Scalar(40, 40, 200), disc);
-  const cv::Rect b(118, 78, 85, 85);
-  for (const cv::Point corner : {b.tl(), cv::Point(b.br().x - 12, b.y),
-                                 cv::Point(b.x, b.br().y - 12), b.br() - cv::Point(12, 12)})
-    cv::rectangle(bgr, cv::Rect(corner, cv::Size(12, 12)), cv::Scalar(200, 60, 30), cv::FILLED);
-  cv::Mat inside;
-  ASSERT_EQ(object_in_box(bgr, {b.x, b.y, b.width, b.height}, inside), BoxStart::Cut);
-  EXPECT_GT(iou(inside, disc), 0.9);
-  EXPECT_LT(cv::countNonZero(inside(cv::Rect(b.tl(), cv::Size(12, 12)))), 10);
-}
-
 TEST(ColourMixture, FollowsTheSurroundingsOnlyWhereTheRingIs) {
   // Red object, a green ring around it, blue far away: followed with the ring alone as the
   // surroundings, green is what the object is told from and blue, never seen near it, says
@@ -267,55 +175,6 @@ TEST(ColourMixture, FollowsTheSurroundingsOnlyWhereTheRingIs) {
   EXPECT_LT(odds.at<float>(5, 5), -5);               // green: its surroundings
   EXPECT_LT(std::abs(odds.at<float>(30, 70)), 1.0);  // blue: not near it
   EXPECT_LT(odds.at<float>(5, 5), odds.at<float>(30, 70) - 5);
-}
-
-// Discs of many colours on a blurred noise: a picture whose colour mixtures k-means can seed in
-// several ways (GrabCut's result on it changes with the RNG's state).
-cv::Mat confetti() {
-  cv::Mat bgr(120, 160, CV_8UC3);
-  cv::RNG rng(2);
-  rng.fill(bgr, cv::RNG::UNIFORM, 0, 256);
-  cv::GaussianBlur(bgr, bgr, {0, 0}, 2.0);
-  for (int k = 0; k < 25; ++k)
-    cv::circle(bgr, {rng.uniform(0, 160), rng.uniform(0, 120)}, rng.uniform(4, 20),
-               cv::Scalar(rng.uniform(0, 256), rng.uniform(0, 256), rng.uniform(0, 256)),
-               cv::FILLED);
-  return bgr;
-}
-
-TEST(ObjectInBox, TheSameBoxGivesTheSameObjectWhateverDrewFromTheRNGBefore) {
-  const WorkImages img = images_of(confetti());
-  std::vector<cv::Mat> boxes, points;
-  for (const std::uint64_t state : {1, 2, 3, 987654321}) {
-    cv::theRNG().state = state;
-    boxes.emplace_back();
-    object_in_box(img.bgr, {40, 30, 80, 60}, boxes.back());
-    points.push_back(objects_at_point(img, {80, 60}, {12, 24})[1]);
-    EXPECT_EQ(cv::theRNG().state, state);  // the caller's RNG is left as it was
-  }
-  for (std::size_t i = 1; i < boxes.size(); ++i) {
-    EXPECT_EQ(cv::countNonZero(boxes[i] != boxes[0]), 0) << "box, RNG state " << i;
-    EXPECT_EQ(cv::countNonZero(points[i] != points[0]), 0) << "point, RNG state " << i;
-  }
-}
-
-TEST(ObjectsAtPoint, TheCandidateTheOthersAgreeWithIsTheObject) {
-  const Scene scene;
-  cv::Mat bgr, truth;
-  scene.render(0, bgr, truth);
-  const WorkImages img = images_of(bgr);
-  cv::Mat red = truth.clone();  // the disc's reddened half, which colour tells apart
-  red(cv::Rect(80, 0, 240, 240)).setTo(0);
-  const std::vector<cv::Mat> found = objects_at_point(img, {62, 90}, {12, 24, 48, 72});
-  ASSERT_EQ(found.size(), 4u);
-  for (const cv::Mat& c : found) {
-    if (!c.empty()) {
-      EXPECT_NE(c.at<std::uint8_t>(90, 62), 0);  // every candidate holds the point
-    }
-  }
-  const int chosen = most_agreed(found);
-  ASSERT_GE(chosen, 0);
-  EXPECT_GT(iou(found[chosen], red), 0.6);
 }
 
 }  // namespace

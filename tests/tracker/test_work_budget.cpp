@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
 #include <string>
 #include <thread>
 
 #include "adversarial.hpp"
+#include "projtrack/color_conversion.hpp"
 #include "projtrack/estimator.hpp"
 #include "projtrack/tracker.hpp"
 #include "projtrack/work_budget.hpp"
@@ -257,6 +259,109 @@ TEST(WorkBudget, EveryFrameOfTheAdversarialSetStaysWithinTheBudget) {
       frames, over, over_edges, static_cast<double>(most) / (kW * kH),
       static_cast<double>(limit) / (kW * kH));
   EXPECT_GT(over_edges, 0) << "the adversarial set must exhaust the edges model's budget";
+}
+
+// A BGR frame of `kind` (flat, noise, gradient) as the tracker reads it.
+struct ColourFrame {
+  cv::Mat bgr;
+  std::vector<std::uint8_t> planes;
+  ColorView view;
+
+  ColourFrame(const std::string& kind, int w, int h, int seed = 1) : bgr(h, w, CV_8UC3) {
+    if (kind == "flat") bgr.setTo(cv::Scalar(90, 120, 150));
+    if (kind == "noise") cv::RNG(seed).fill(bgr, cv::RNG::UNIFORM, 0, 256);
+    if (kind == "gradient")
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          bgr.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<std::uint8_t>(255 * x / w),
+                                              static_cast<std::uint8_t>(255 * y / h), 128);
+    view = packed_rgb_to_color(bgr.data + 2, bgr.data + 1, bgr.data, 3,
+                               static_cast<std::ptrdiff_t>(bgr.step), w, h, planes);
+  }
+};
+
+// The flow model's starts (a cut of the box, or of squares around the click) on the pictures
+// that cost GrabCut the most (a flat frame took it 16-20 s, noise and gradients hundreds of ms at
+// 640×480): every frame, the start's included, within the frame's budget and the overshoot
+// bound, at every size; a flat frame has nothing to cut and says so.
+TEST(WorkBudget, FlowStartsOnFlatNoiseAndGradientFramesStayWithinTheBudget) {
+  const cv::Size sizes[] = {{160, 120}, {640, 480}, {1280, 720}, {1920, 1080}};
+  std::uint64_t most = 0;
+  for (const cv::Size size : sizes) {
+    const int w = size.width, h = size.height;
+    for (const std::string kind : {"flat", "noise", "gradient"}) {
+      for (const bool box : {true, false}) {
+        TrackerParams tp;
+        tp.model = ObjectModelKind::Flow;
+        tp.acquisition = Acquisition::Manual;
+        Tracker t;
+        if (box)
+          t.seed_box({w / 3, h / 3, w / 3, h / 3});
+        else
+          t.seed({w / 2, h / 2});
+        for (int i = 0; i < 3; ++i) {
+          const ColourFrame f(kind, w, h, i + 1);
+          const TrackResult r =
+              t.track(f.view, EdgeParams{}, i / 30.0, Method::GapTolerantFilling, Params{}, tp);
+          const std::string what = kind + " " + std::to_string(w) + "x" + std::to_string(h) +
+                                   (box ? " from a box" : " from a point") + ", frame " +
+                                   std::to_string(i) + ": " + std::string(status_name(r.status)) +
+                                   " " + r.detail;
+          EXPECT_LE(r.work, r.work_limit + overshoot_bound(w, h)) << what;
+          most = std::max(most, r.work);
+          if (kind == "flat") {
+            EXPECT_NE(r.detail.find("nothing to cut"), std::string::npos) << what;
+          }
+        }
+      }
+    }
+  }
+  std::printf("the most work of a frame: %.1fM units\n", most / 1e6);
+}
+
+// The stop flag set while a start runs (a click on 1080p noise, its costliest) ends the frame
+// `interrupted` within milliseconds: each of the start's stages checks it before it runs.
+TEST(WorkBudget, TheStopFlagEndsAFlowStart) {
+  const ColourFrame noise("noise", 1920, 1080);
+  TrackerParams tp;
+  tp.model = ObjectModelKind::Flow;
+  tp.acquisition = Acquisition::Manual;
+  std::atomic<bool> stop{true};
+  Tracker t;
+  t.set_stop_flag(&stop);
+  t.seed({960, 540});
+  const TrackResult before =
+      t.track(noise.view, EdgeParams{}, 0, Method::GapTolerantFilling, Params{}, tp);
+  EXPECT_EQ(before.status, TrackStatus::Interrupted) << before.detail;
+  EXPECT_EQ(before.work, 0U);
+  stop = false;
+  t.seed({960, 540});
+  const TrackResult whole =
+      t.track(noise.view, EdgeParams{}, 0, Method::GapTolerantFilling, Params{}, tp);
+  ASSERT_NE(whole.status, TrackStatus::Interrupted);
+  using Clock = std::chrono::steady_clock;
+  std::atomic<bool> started{false};
+  Clock::time_point set_at;
+  std::thread stopper([&] {
+    while (!started) std::this_thread::yield();
+    std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    set_at = Clock::now();
+    stop = true;
+  });
+  TrackResult r;
+  Clock::time_point returned;
+  for (int i = 0; i < 1000 && r.status != TrackStatus::Interrupted; ++i) {
+    t.seed({960, 540});  // a start on every frame
+    started = true;
+    r = t.track(noise.view, EdgeParams{}, 0, Method::GapTolerantFilling, Params{}, tp);
+    returned = Clock::now();
+  }
+  stopper.join();
+  ASSERT_EQ(r.status, TrackStatus::Interrupted) << r.detail;
+  const double ms = std::chrono::duration<double, std::milli>(returned - set_at).count();
+  EXPECT_LT(ms, 50) << "from the flag to the frame's end";
+  std::printf("stopped %.2f ms after the flag, having done %.1fM of a start's %.1fM units\n", ms,
+              r.work / 1e6, whole.work / 1e6);
 }
 
 // A bright disc on a dark background, moving right by `dx` px.

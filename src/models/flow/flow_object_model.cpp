@@ -71,9 +71,7 @@ Observation FlowObjectModel::start(FrameEvidence& ev, const StartRequest& reques
   // A mask or a box bounds the first silhouette; a point does not.
   const bool outlined =
       request.from == StartRequest::From::Mask || request.from == StartRequest::From::Box;
-  const AppearanceStart start = request.from == StartRequest::From::Nothing
-                                    ? search(ev, track, *whole)
-                                    : first_silhouette(ev, request, track, *whole);
+  const FirstSilhouette start = first_silhouette(ev, request, track, *whole);
   if (!start.found) {
     if (ev.budget.ran_out() || ev.budget.interrupted()) return Observation::stopped();
     return Observation::missing(start.why);
@@ -157,7 +155,6 @@ void FlowObjectModel::settle(Verdict verdict) {
 bool FlowObjectModel::rescale(double sx, double sy, int width, int height) {
   // The silhouette and the last picture follow the frame to its new size, at the scale the
   // object's new size asks for; the colours stay (a resize changes none).
-  finder_.forget_motion();
   if (!segmenter_.tracking()) return false;
   const double area = segmenter_.area() * scale_ * scale_ * sx * sy;
   const int scale = object_scale(area, object_pixels_);
@@ -170,8 +167,6 @@ bool FlowObjectModel::rescale(double sx, double sy, int width, int height) {
 bool FlowObjectModel::relearn() {
   // The silhouette stays where it is; its colours and its surroundings' are learned anew on the
   // next frame, where the motion carries it (the element's caps, Python's frames: colour to gray).
-  finder_.object.forget();
-  finder_.forget_motion();
   usual_support_ = 0;
   if (!segmenter_.tracking()) return false;
   segmenter_.relearn_colours();
@@ -181,8 +176,6 @@ bool FlowObjectModel::relearn() {
 void FlowObjectModel::forget(Forget what) {
   // A track dropped keeps the object's colours to find it again (Forget::Position).
   segmenter_.forget(what == Forget::Everything);
-  finder_.object.forget();
-  finder_.forget_motion();
   moving_.reset();
   last_searched_.release();
   searched_ = 0;

@@ -1,19 +1,28 @@
 // The flow model (ObjectModelKind::Flow): the whole object as it moves. Its last silhouette is
 // carried along the picture's dense motion and cut from its surroundings where that prior, the
 // colours of both and the motion of both agree (segmentation/flow_segmenter). It starts from the
-// user's mask as it is, from GrabCut's object in the user's box (segmentation/box_start), and from
-// a point or nothing from the appearance model's first silhouette checked against GrabCut's
-// candidates around the point (segmentation/point_start).
+// user's mask as it is, from the object cut out of the user's box (segmentation/box_start) or
+// around the user's point (segmentation/point_start), and with no start from the object lost
+// before, found again by its colours, or the object that moves apart from the picture's own
+// motion (flow_search.cpp).
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <string>
 
 #include "acquisition/moving_object.hpp"
-#include "models/appearance/appearance_memory.hpp"
 #include "models/object_model.hpp"
 #include "segmentation/flow_segmenter.hpp"
+#include "segmentation/start_cut.hpp"
 
 namespace projtrack {
+
+// How a start found the object's first silhouette.
+struct FirstSilhouette {
+  bool found = false;
+  bool resumed = false;  // the object lost before, found again by its colours
+  std::string why;       // when not found
+};
 
 class FlowObjectModel final : public ObjectModel {
  public:
@@ -28,25 +37,24 @@ class FlowObjectModel final : public ObjectModel {
   SilhouetteMask silhouette(int frame_width, int frame_height) const override;
 
  private:
-  // The first silhouette, into inside_ (the work images' size): the user's mask, GrabCut in the
-  // user's box, or for a point or nothing the appearance model's start.
-  AppearanceStart first_silhouette(FrameEvidence& ev, const StartRequest& request,
+  // The first silhouette, into inside_ (the work images' size): the user's mask, the object cut
+  // out of the user's box or around the user's point, or with no start what search() finds.
+  FirstSilhouette first_silhouette(FrameEvidence& ev, const StartRequest& request,
                                    const Track& track, const WorkImages& img);
-  // A point start: GrabCut's candidates around the point against the appearance model's first
-  // silhouette (inside_, when `start` found it); the one the others agree with most into
-  // inside_.
-  void choose_at_point(const WorkImages& img, Point2i point, AppearanceStart& start);
   // The object followed at the scale its size asks for (FlowModelParams::object_pixels).
   void follow_scale(const FrameEvidence& ev);
   // A start nobody pointed at (flow_search.cpp), into inside_ (`whole`'s size): by
   // TrackerParams::acquisition, the object at the frame's centre, or the object lost before where
   // its colours are near where it was lost and something moves, else the object that moves apart
   // from the picture's own motion (acquisition/moving_object).
-  AppearanceStart search(FrameEvidence& ev, const Track& track, const WorkImages& whole);
+  FirstSilhouette search(FrameEvidence& ev, const Track& track, const WorkImages& whole);
   // The object lost before, by its colours: a piece of them near where it was lost, of about its
   // area, that moved since the last frame searched (a static patch of its colours is not it).
   bool find_by_colours(FrameEvidence& ev, const Track& track, const WorkImages& whole,
                        const cv::Mat& moved);
+  // The moving region found (inside_) replaced by the object cut out of its box, when the cut
+  // agrees with it.
+  void refine_in_box(FrameEvidence& ev, const WorkImages& whole);
   // Where `gray` (the whole work frame) changed since the last frame searched, beyond its noise,
   // into moved_; false on the first frame searched.
   bool changed_since_last(const cv::Mat& gray);
@@ -54,13 +62,12 @@ class FlowObjectModel final : public ObjectModel {
   Observation observed(bool resumed);
 
   FlowSegmenter segmenter_;
-  AppearanceMemory finder_;    // how a point finds the object's first silhouette
+  CutWorkspace cut_work_;      // the box's and the point's cuts (kept: their buffers are reused)
   MovingObjectFinder moving_;  // the moving object, when nobody points at one
   int searched_ = 0;           // frames searched since the object was lost (or forgotten)
   // Buffers of the search: the last frame searched, what changed since, the colours' log-odds,
   // the pieces.
-  cv::Mat last_searched_, moved_, colour_odds_, pieces_, piece_stats_, piece_centres_;
-  Mask first_, found_;     // the finder's buffers
+  cv::Mat last_searched_, moved_, colour_odds_, pieces_, piece_stats_, piece_centres_, refined_;
   Mask silhouette_;        // this frame's silhouette, as the estimator reads it
   cv::Mat inside_;         // the first silhouette, at the start's working scale
   cv::Mat object_inside_;  // the same at the object's scale

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "models/flow/flow_object_model.hpp"
+#include "segmentation/box_start.hpp"
 
 namespace projtrack {
 
@@ -22,6 +23,9 @@ constexpr double kLeastMeanOdds = 1.0;
 constexpr double kLeastMovedShare = 0.05;
 // ...and it lies within this many times √(its lost area) of where it was lost.
 constexpr double kReach = 4.0;
+// The object cut out of a moving region's box stands for the region when their intersection over
+// union is at least this: a cut that took something else in the box keeps the region.
+constexpr double kLeastRefinedOverlap = 0.5;
 
 // The median of CV_8U `m` and its median absolute deviation, by histogram.
 std::array<int, 2> median_and_spread(const cv::Mat& m) {
@@ -90,9 +94,9 @@ bool FlowObjectModel::find_by_colours(FrameEvidence& ev, const Track& track,
   return true;
 }
 
-AppearanceStart FlowObjectModel::search(FrameEvidence& ev, const Track& track,
+FirstSilhouette FlowObjectModel::search(FrameEvidence& ev, const Track& track,
                                         const WorkImages& whole) {
-  AppearanceStart out;
+  FirstSilhouette out;
   const TrackerParams& tp = ev.tp;
   if (tp.acquisition == Acquisition::Center) {
     StartRequest centre;
@@ -116,7 +120,23 @@ AppearanceStart FlowObjectModel::search(FrameEvidence& ev, const Track& track,
     return out;
   }
   out.found = moving_.find(whole.gray, ev.budget, inside_, out.why);
+  if (out.found) refine_in_box(ev, whole);
   return out;
+}
+
+void FlowObjectModel::refine_in_box(FrameEvidence& ev, const WorkImages& whole) {
+  // What moves apart is the object's changing part, or its hull: the object itself is cut out of
+  // that region's box, as from a user's box, when the cut keeps most of the region.
+  const cv::Rect b = cv::boundingRect(inside_);
+  const int s = whole.scale;
+  const Rect box =
+      clip_to_frame({b.x * s, b.y * s, b.width * s, b.height * s}, ev.width(), ev.height());
+  const StartOutcome cut = object_in_box(ev.frame, box, ev.tp.flow.box_pixels, whole.size(),
+                                         cut_work_, ev.budget, refined_);
+  if (cut.kind != StartOutcome::Kind::Cut) return;
+  const double both = cv::countNonZero(refined_ & inside_);
+  if (both >= kLeastRefinedOverlap * cv::countNonZero(inside_ | refined_))
+    cv::swap(inside_, refined_);
 }
 
 }  // namespace projtrack
