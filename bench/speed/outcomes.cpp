@@ -6,6 +6,7 @@
 
 #include "output.hpp"
 #include "projtrack/method.hpp"
+#include "projtrack/names.hpp"
 #include "projtrack/tracker.hpp"
 #include "race.hpp"
 #include "sections.hpp"
@@ -18,7 +19,7 @@ namespace projtrack::bench {
 // and those whose outcome (status, centroid, area) differs from the unlimited run's.
 void ordinary_work(const Clip& clip) {
   const double pixels = static_cast<double>(clip.width) * clip.height;
-  for (ObjectModelKind model : {ObjectModelKind::Appearance, ObjectModelKind::Edges}) {
+  for (ObjectModelKind model : {ObjectModelKind::Flow, ObjectModelKind::Edges}) {
     for (Method method : kAllMethods) {
       TrackerParams unlimited, limited;
       unlimited.model = limited.model = model;
@@ -39,9 +40,7 @@ void ordinary_work(const Clip& clip) {
                    ra.features.area != rb.features.area;
       }
       std::sort(work.begin(), work.end());
-      const std::string what =
-          std::string(model == ObjectModelKind::Edges ? "edges " : "appearance ") +
-          std::string(method_name(method));
+      const std::string what = std::string(nick_of(model)) + " " + std::string(method_name(method));
       row("ordinary_work", &clip, what, "median_x", median(work));
       row("ordinary_work", &clip, what, "p99_x", work[work.size() * 99 / 100]);
       row("ordinary_work", &clip, what, "max_x", work.back());

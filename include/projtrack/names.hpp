@@ -40,7 +40,8 @@ inline constexpr NameRow<Acquisition> kAcquisitionNames[] = {
 #undef PROJTRACK_NAME
 };
 inline constexpr NameRow<ObjectModelKind> kObjectModelNames[] = {
-#define PROJTRACK_OBJECT_MODEL(id, nick, description) {ObjectModelKind::id, nick, description},
+#define PROJTRACK_OBJECT_MODEL(id, value, nick, description) \
+  {ObjectModelKind::id, nick, description},
 #include "object_model_table.def"
 #undef PROJTRACK_OBJECT_MODEL
 };

@@ -5,11 +5,9 @@
 #include <cmath>
 #include <cstdint>
 
-#include "finder_params.hpp"
 #include "flow_model_params.hpp"
 #include "gesture.hpp"
 #include "motion_params.hpp"
-#include "object_model_params.hpp"
 #include "smoothing_params.hpp"
 
 namespace projtrack {
@@ -28,22 +26,17 @@ enum class AutoAcquisition {
 };
 
 // What the tracker knows of the object between frames: one value per row of
-// object_model_table.def (edges: the paper's tracker on the edge image alone; appearance: the
-// object's silhouette from its colours; flow: the whole object carried along the picture's motion
-// and cut from its surroundings). docs/tracker.md says what each does.
+// object_model_table.def (flow: the whole object carried along the picture's motion and cut from
+// its surroundings, the default; edges: the paper's tracker on the edge image alone).
+// docs/tracker.md says what each does.
 enum class ObjectModelKind {
-#define PROJTRACK_OBJECT_MODEL(id, nick, description) id,
+#define PROJTRACK_OBJECT_MODEL(id, value, nick, description) id = value,
 #include "object_model_table.def"
 #undef PROJTRACK_OBJECT_MODEL
 };
-inline constexpr int kObjectModelCount = 0
-#define PROJTRACK_OBJECT_MODEL(id, nick, description) +1
-#include "object_model_table.def"
-#undef PROJTRACK_OBJECT_MODEL
-    ;
 
 struct TrackerParams {
-  ObjectModelKind model = ObjectModelKind::Appearance;
+  ObjectModelKind model = ObjectModelKind::Flow;
   Acquisition acquisition = Acquisition::Auto;
   AutoAcquisition strategy = AutoAcquisition::CompactMovingRegion;
   MotionParams motion{25, 4};
@@ -58,11 +51,6 @@ struct TrackerParams {
   double max_area = 0.5;
   double min_area = 0.0005;
   int patience = 5;  // refused frames in a row tolerated; the next one drops the track
-  // Appearance model: an object found without the user's point whose estimates are refused on
-  // `unsteady` of the last 2·`unsteady` frames, accepted in between, is dropped: what alternates
-  // between accepted and refused is a fragment the estimates cannot hold (a walker's silhouette
-  // falling apart), not an object. 0: never.
-  int unsteady = 3;
 
   // Edges model: while tracking, edges are needed only around the object: the last box, and that
   // box moved by the object's last motion, grown by this share of its larger side (at least
@@ -70,29 +58,11 @@ struct TrackerParams {
   // the margin, then on the whole frame. Negative: always the whole frame.
   double edge_margin = 0.1;
 
-  // Appearance model: how it finds, segments and learns the object.
-  ObjectModelParams object;
-  FinderParams finder;
   // Flow model: how it carries and cuts the object.
   FlowModelParams flow;
-  // The grey-level thresholds of motion (MotionParams::threshold) and of the
-  // background (FinderParams::background_change) hold for a scene whose luma spans this many
-  // levels (2nd to 98th percentile); in a dimmer one, whose changes are as much smaller, they
-  // shrink in proportion, to a third at most.
-  double full_contrast = 190;
-  // Appearance model: a frame whose bright end (98th percentile of luma) lies fewer than this
-  // many levels above black is dim; it is read with its luma and chroma stretched so that its
-  // bright end lies `full_contrast` levels above black, at most 3× (Exposure): colours that a dim
-  // camera squeezes together are told apart as in good light. 0: never.
-  double dim_white = 140;
   // After a loss the object is searched by its colours; after this many frames without finding
   // it, its colours are forgotten and Auto acquisition looks for any moving object.
   int forget_after = 150;
-  // An object found without the user's point is held (reported lost) on a frame in which its
-  // silhouette is the scene's background (FinderParams::min_foreground) and its box hardly
-  // changes (FinderParams::min_moving), and dropped after `still_frames` such frames in a row;
-  // 0: never.
-  int still_frames = 4;
 
   // The work one frame may do, as a multiple of the frame's pixels (at least kLeastBudgetPixels),
   // in work units (about what one pixel of a fill costs, a nanosecond or so; work_budget.hpp):

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/work_frame.hpp"
 #include "projtrack/edge_detection.hpp"
 #include "projtrack/geometry.hpp"
 #include "projtrack/image_view.hpp"
@@ -24,15 +23,10 @@ class EdgeSource {
   // The parameters edges are detected with (defaults for given edges).
   const EdgeParams& params() const { return params_; }
   // The budget region() spends its work from (work_budget.hpp; null: none). Once it runs out,
-  // regions come back incomplete (without edges where the work stopped). Work frames, bounded by
-  // their scale, are not charged.
+  // regions come back incomplete (without edges where the work stopped).
   void set_budget(WorkBudget* budget) { budget_ = budget; }
   // The edges of `region` (clipped to the frame), valid until the next call.
   ImageView region(const Rect& r);
-  // The edges of a work frame (see WorkFrame), valid until the next call with the same `map`:
-  // detected on its luma with this source's parameters (into `map`), or, for given edges, an
-  // edge wherever its block holds one (into `buffer`).
-  ImageView work(const WorkFrame& wf, EdgeMap& map, std::vector<std::uint8_t>& buffer) const;
   // How far from a region's inner border its edges may differ from the whole frame's: the blur
   // passes after the first, and Canny's own 3×3 neighbourhood (0 for given edges).
   int border_guard() const { return map_ ? std::clamp(params_.blur, 0, kMaxBlurPasses) + 3 : 0; }

@@ -123,9 +123,6 @@ class ObjectModel {
   virtual void forget(Forget what) = 0;
   // The object's silhouette after the last frame (empty when the model holds none).
   virtual SilhouetteMask silhouette(int frame_width, int frame_height) const;
-  // Whether a track found without the user's point that is refused on and off is a fragment to
-  // drop (TrackerParams::unsteady).
-  virtual bool drops_unsteady() const { return false; }
 };
 
 // The model of `kind`, made from the table's row (src/models/model_table.cpp).

@@ -14,15 +14,13 @@ inline bool waits_for_user(const Track& t, const TrackerParams& tp) {
   return !t.inner && tp.acquisition == Acquisition::Manual;
 }
 
-// After a refused frame (TrackerState::refuse): whether the track ends, and why beyond the
-// refusal. `forced`: the caller ends it whatever the count (a model's veto). `drops_unsteady`:
-// the model drops a track found without the user's point that is refused on and off
-// (ObjectModel::drops_unsteady, TrackerParams::unsteady).
+// After a refused frame (TrackerState::refuse): whether the track ends — after
+// TrackerParams::patience refused frames in a row, or at once when `forced` (a model's veto) —
+// and what to add to the refusal's reason.
 struct AfterRefusal {
   bool drop = false;
   std::string note;  // appended to the refusal's reason
 };
-AfterRefusal after_refusal(const Track& t, const TrackerParams& tp, bool forced,
-                           bool drops_unsteady);
+AfterRefusal after_refusal(const Track& t, const TrackerParams& tp, bool forced);
 
 }  // namespace projtrack

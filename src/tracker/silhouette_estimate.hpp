@@ -6,12 +6,12 @@
 #include <optional>
 #include <vector>
 
-#include "appearance/silhouette_pieces.hpp"
 #include "core/mask.hpp"
-#include "core/work_frame.hpp"
+#include "core/work_scale.hpp"
 #include "projtrack/estimator.hpp"
 #include "projtrack/trace.hpp"
 #include "projtrack/work_budget.hpp"
+#include "tracker/silhouette_pieces.hpp"
 
 namespace projtrack {
 

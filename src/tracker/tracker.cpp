@@ -196,7 +196,7 @@ void Tracker::Impl::refuse(std::string why, const TrackerParams& tp, TrackResult
   r.detail = std::move(why);
   report_last(state, r);
   state.refuse();
-  const AfterRefusal next = after_refusal(state.track(), tp, drop_now, model->drops_unsteady());
+  const AfterRefusal next = after_refusal(state.track(), tp, drop_now);
   r.detail += next.note;
   if (!next.drop) return;
   // A track accepted on one frame only was never an object: its model is not searched for.

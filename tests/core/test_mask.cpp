@@ -6,11 +6,11 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
-#include "appearance/silhouette_pieces.hpp"
 #include "core/mask.hpp"
 #include "core/region_labels.hpp"
-#include "core/work_frame.hpp"
+#include "core/work_scale.hpp"
 #include "scenes.hpp"
+#include "tracker/silhouette_pieces.hpp"
 
 namespace projtrack {
 namespace {
@@ -208,56 +208,6 @@ TEST(SilhouettePieces, ANeckSplitsTwoBlobsAndEveryPixelBelongsToOne) {
   EXPECT_EQ(pieces.piece_at({20, 20}) == pieces.piece_at({68, 20}), false);
   EXPECT_EQ(pieces.whole(s), 1);
   EXPECT_EQ(moments(pieces.piece(0)).area, moments(s).area);
-}
-
-// The work frame of a W × H random frame at every scale in `scales`, checked pixel by pixel.
-void expect_block_means(int W, int H, std::initializer_list<int> scales) {
-  // Random 4:2:0 planes (odd sizes too: the last chroma sample covers a last odd row/column).
-  const int cw = (W + 1) / 2, ch = (H + 1) / 2;
-  cv::Mat planes(1, W * H + 2 * cw * ch, CV_8U);
-  cv::randu(planes, 0, 256);
-  ColorView c;
-  c.luma = ImageView(planes.data, W, H, W);
-  c.chroma = {planes.data + W * H, planes.data + W * H + cw * ch, cw, 1, 1, 1};
-  // Regions clipped to the frame's blocks (the last ones partial unless s divides the frame),
-  // and regions inside it (all blocks whole).
-  for (const bool inside : {false, true})
-    for (int s : scales) {
-      WorkFrame wf;
-      const Rect blocks{0, 0, (W + s - 1) / s, (H + s - 1) / s};
-      const Rect region =
-          inside ? Rect{1, 1, blocks.width - 3, blocks.height - 3} : Rect{1, 1, 1000, 1000};
-      wf.build(c, s, region);
-      const Rect expect = region & blocks;
-      ASSERT_EQ(wf.rect(), expect) << s;
-      for (int y = 0; y < wf.rect().height; ++y) {
-        for (int x = 0; x < wf.rect().width; ++x) {
-          const int fx0 = (x + 1) * s, fy0 = (y + 1) * s;
-          int sum = 0, n = 0;
-          for (int fy = fy0; fy < std::min(H, fy0 + s); ++fy)
-            for (int fx = fx0; fx < std::min(W, fx0 + s); ++fx) sum += c.luma.at(fx, fy), ++n;
-          ASSERT_EQ(wf.view().luma.at(x, y), (sum + n / 2) / n) << s;
-          // Chroma: the mean over the block's pixels of the chroma sample covering each.
-          int su = 0, sv = 0, m = 0;
-          for (int fy = fy0; fy < std::min(H, fy0 + s); ++fy)
-            for (int fx = fx0; fx < std::min(W, fx0 + s); ++fx, ++m) {
-              su += c.chroma.u_at(fx, fy);
-              sv += c.chroma.v_at(fx, fy);
-            }
-          ASSERT_EQ(wf.view().chroma.u_at(x, y), (su + m / 2) / m) << s;
-          ASSERT_EQ(wf.view().chroma.v_at(x, y), (sv + m / 2) / m) << s;
-        }
-      }
-    }
-}
-
-TEST(WorkFrame, BlocksAreTheMeansOfTheirPixels) {
-  expect_block_means(64, 48, {1, 2, 3, 4, 5, 7, 8, 9, 13});
-  // Odd sizes: the last block at scale 2 is cut by the frame's edge, its one chroma sample too.
-  expect_block_means(63, 47, {1, 2, 3});
-  // Large blocks, whole ones among them: their means by a multiplication, exact to the last
-  // level up to the largest scale the column sums take (257), and past it (the plain sums).
-  expect_block_means(1200, 1040, {40, 97, 257, 260});
 }
 
 }  // namespace

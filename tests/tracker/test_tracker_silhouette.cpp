@@ -1,4 +1,4 @@
-// Tracker::silhouette: the appearance model's mask out at full resolution, the same pixels the
+// Tracker::silhouette: the flow model's mask out at full resolution, the same pixels the
 // estimate measured; nothing for the edges model, before a frame or into an unusable buffer.
 #include <gtest/gtest.h>
 
@@ -54,7 +54,7 @@ TEST(TrackerSilhouette, TheMaskIsTheMeasuredObject) {
   for (int i = 0; i < 5; ++i) {
     const cv::Mat f = disc_i420(150 + 4 * i);
     const TrackResult r = t.track(test::i420_view(f, kW, kH), EdgeParams{}, i / 30.0,
-                                  Method::PixelFilling, {}, manual(ObjectModelKind::Appearance));
+                                  Method::PixelFilling, {}, manual(ObjectModelKind::Flow));
     ASSERT_TRUE(has_features(r.status)) << status_name(r.status) << ": " << r.detail;
     Padded m;
     ASSERT_TRUE(t.silhouette(m.bytes.data(), kW, kH, Padded::kStride));
@@ -77,7 +77,7 @@ TEST(TrackerSilhouette, NoneBeforeAFrameWithTheEdgesModelOrIntoABadBuffer) {
   const cv::Mat f = disc_i420(160);
   t.seed({160, 120});
   ASSERT_TRUE(has_features(t.track(test::i420_view(f, kW, kH), EdgeParams{}, 0, Method::GridFilling,
-                                   {}, manual(ObjectModelKind::Appearance))
+                                   {}, manual(ObjectModelKind::Flow))
                                .status));
   EXPECT_FALSE(t.silhouette(nullptr, kW, kH, kW));
   EXPECT_FALSE(t.silhouette(m.bytes.data(), kW, kH, kW - 1));
@@ -109,7 +109,8 @@ TEST(TrackerSilhouette, EveryFramePixelOfACoarseWorkPixelIsDrawnAsItIs) {
   cv::circle(seed, {310, 120}, 40, 255, cv::FILLED);
   cv::cvtColor(bgr, i420, cv::COLOR_BGR2YUV_I420);
   TrackerParams tp = manual(ObjectModelKind::Flow);
-  tp.flow.work_pixels = kWide * kH / 16.0;
+  // The disc cut by the edge (about 4 200 px) at a sixteenth of its pixels: scale 4.
+  tp.flow.object_pixels = 4200 / 16.0;
   Tracker t;
   ASSERT_TRUE(t.seed_mask(ImageView(seed.data, kWide, kH, kWide)));
   for (int i = 0; i < 3; ++i) {
@@ -135,7 +136,7 @@ TEST(TrackerSilhouette, ResetForgetsIt) {
   const cv::Mat f = disc_i420(160);
   t.seed({160, 120});
   t.track(test::i420_view(f, kW, kH), EdgeParams{}, 0, Method::GridFilling, {},
-          manual(ObjectModelKind::Appearance));
+          manual(ObjectModelKind::Flow));
   Padded m;
   ASSERT_TRUE(t.silhouette(m.bytes.data(), kW, kH, Padded::kStride));
   t.reset();

@@ -2,7 +2,6 @@
 // a refused frame (src/tracker/tracker_state.hpp, acquisition_policy.hpp).
 #include <gtest/gtest.h>
 
-#include "models/appearance/appearance_memory.hpp"
 #include "tracker/refusal_policy.hpp"
 #include "tracker/tracker_state.hpp"
 
@@ -98,39 +97,13 @@ TEST(AcquisitionPolicy, PatienceRefusalsAreToleratedAndTheNextDropsTheTrack) {
   s.accept(estimate_at(50, 50, 400), false, 0, 320, 240, tp);
   for (int i = 1; i <= tp.patience; ++i) {
     s.refuse();
-    EXPECT_FALSE(after_refusal(s.track(), tp, false, true).drop) << i;
+    EXPECT_FALSE(after_refusal(s.track(), tp, false).drop) << i;
   }
   s.refuse();
-  const AfterRefusal last = after_refusal(s.track(), tp, false, true);
+  const AfterRefusal last = after_refusal(s.track(), tp, false);
   EXPECT_TRUE(last.drop);
   EXPECT_NE(last.note.find("dropped"), std::string::npos);
-  EXPECT_TRUE(after_refusal(Track{}, tp, true, true).drop) << "forced";
-}
-
-TEST(AcquisitionPolicy, AnObjectFoundByMotionRefusedOnAndOffIsAFragment) {
-  TrackerParams tp;  // appearance model, unsteady = 3
-  ASSERT_EQ(tp.unsteady, 3);
-  for (bool seeded : {false, true}) {
-    TrackerState s;
-    if (seeded) s.seed({50, 50});
-    s.accept(estimate_at(50, 50, 400), false, 0, 320, 240, tp);
-    bool dropped = false;
-    for (int i = 0; i < 3 && !dropped; ++i) {  // refused, accepted, refused, accepted, ...
-      s.refuse();
-      dropped = after_refusal(s.track(), tp, false, true).drop;
-      s.accept(estimate_at(50, 50, 400), false, 0.04 * (i + 1), 320, 240, tp);
-    }
-    EXPECT_EQ(dropped, !seeded) << "the user's object is never taken for a fragment";
-  }
-}
-
-TEST(AcquisitionPolicy, ThresholdsShrinkWithTheScenesContrastToAThird) {
-  const TrackerParams tp;
-  EXPECT_EQ(motion_params(tp, 0).threshold, tp.motion.threshold) << "not measured yet";
-  EXPECT_EQ(motion_params(tp, 400).threshold, tp.motion.threshold);
-  EXPECT_EQ(motion_params(tp, 10).threshold,
-            static_cast<int>(std::lround(tp.motion.threshold / 3.0)));
-  EXPECT_LT(finder_params(tp, 95).background_change, tp.finder.background_change);
+  EXPECT_TRUE(after_refusal(Track{}, tp, true).drop) << "forced";
 }
 
 }  // namespace

@@ -212,7 +212,7 @@ TEST(WorkBudget, EveryFrameOfTheAdversarialSetStaysWithinTheBudget) {
   }
   int frames = 0, over = 0, over_edges = 0;
   std::uint64_t most = 0;
-  for (ObjectModelKind model : {ObjectModelKind::Edges, ObjectModelKind::Appearance}) {
+  for (ObjectModelKind model : {ObjectModelKind::Edges, ObjectModelKind::Flow}) {
     for (const Start& start : kStarts) {
       for (const MethodInfo& m : kMethods) {
         for (std::size_t k = 0; k < sequences.size(); ++k) {
@@ -228,7 +228,7 @@ TEST(WorkBudget, EveryFrameOfTheAdversarialSetStaysWithinTheBudget) {
           }
           for (int i = 0; i < kFrames; ++i) {
             const std::string what =
-                std::string(model == ObjectModelKind::Edges ? "edges" : "appearance") + ", " +
+                std::string(model == ObjectModelKind::Edges ? "edges" : "flow") + ", " +
                 start.name + ", " + m.nick + ", " + kAdversaries[k].name + " frame " +
                 std::to_string(i);
             const ImageView g = view(sequences[k][i]);

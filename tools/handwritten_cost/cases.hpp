@@ -18,9 +18,6 @@ void pixel_duels(const std::vector<Frame>& frames, const Effort& e, std::FILE* o
 // (chamfer distance), filling holes, moments.
 void mask_duels(const std::vector<MaskInput>& masks, const Effort& e, std::FILE* out);
 
-// The colour model (cases_colour.cpp): histograms and their back-projection, mean shift.
-void colour_duels(const std::vector<Frame>& frames, const Effort& e, std::FILE* out);
-
 // The overlay's text (cases_text.cpp): the 5×7 font through the painter, against cv::putText.
 void text_duels(const std::vector<Frame>& frames, const Effort& e, std::FILE* out);
 

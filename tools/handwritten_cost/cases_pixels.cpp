@@ -3,12 +3,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cases.hpp"
-#include "core/work_frame.hpp"
 #include "edges/box_blur.hpp"
 #include "edges/canny.hpp"
 #include "projtrack/color_conversion.hpp"
 #include "projtrack/edge_detection.hpp"
-#include "projtrack/finder_params.hpp"
 
 namespace projtrack::handwritten {
 
@@ -92,36 +90,12 @@ void colour_conversions(const Frame& f, const Effort& e, std::FILE* out) {
   write_row(out, r, y);
 }
 
-// The finder's work frame of the whole frame: luma block means, chroma the block's centre sample.
-void work_frame(const Frame& f, const Effort& e, std::FILE* out) {
-  const int s = work_scale(static_cast<double>(f.width) * f.height, FinderParams{}.work_pixels);
-  const Rect region{0, 0, (f.width + s - 1) / s, (f.height + s - 1) / s};
-  const ColorView color = f.color();
-  WorkFrame wf;
-  cv::Mat luma(region.height, region.width, CV_8U), u(region.height, region.width, CV_8U),
-      v(region.height, region.width, CV_8U);
-  Row r{"block means to a working scale (luma area, chroma nearest)",
-        "src/core/work_frame.cpp WorkFrame::build",
-        "cv::resize INTER_AREA (luma) + INTER_NEAREST (Cb, Cr)",
-        f.name + " I420 at the finder's scale " + std::to_string(s), ""};
-  const Duel d = duel([&] { wf.build(color, s, region); },
-                      [&] {
-                        cv::resize(f.luma, luma, luma.size(), 0, 0, cv::INTER_AREA);
-                        cv::resize(f.u, u, u.size(), 0, 0, cv::INTER_NEAREST);
-                        cv::resize(f.v, v, v.size(), 0, 0, cv::INTER_NEAREST);
-                      },
-                      e.rounds, e.calls);
-  r.same = "luma " + same_pixels(mat(wf.view().luma), luma);
-  write_row(out, r, d);
-}
-
 }  // namespace
 
 void pixel_duels(const std::vector<Frame>& frames, const Effort& e, std::FILE* out) {
   for (const Frame& f : frames) {
     edges(f, e, out);
     colour_conversions(f, e, out);
-    work_frame(f, e, out);
   }
 }
 

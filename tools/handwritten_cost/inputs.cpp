@@ -5,9 +5,8 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "core/work_frame.hpp"
-#include "projtrack/finder_params.hpp"
-#include "projtrack/object_model_params.hpp"
+#include "core/work_scale.hpp"
+#include "projtrack/flow_model_params.hpp"
 #include "scene.hpp"
 
 namespace projtrack::handwritten {
@@ -66,17 +65,15 @@ cv::Mat hand_at(int w, int h) {
 std::vector<MaskInput> hand_masks() {
   std::vector<MaskInput> out;
   const cv::Mat vga = hand_at(640, 480), hd = hand_at(1920, 1080);
-  out.push_back(
-      shrunk("finder work frame of 640x480", vga, {0, 0, 640, 480}, FinderParams{}.work_pixels));
-  out.push_back(
-      shrunk("finder work frame of 1920x1080", hd, {0, 0, 1920, 1080}, FinderParams{}.work_pixels));
-  // The object model's region: the hand's box and as much again around it.
+  const FlowModelParams flow;
+  out.push_back(shrunk("work frame of 640x480", vga, {0, 0, 640, 480}, flow.work_pixels));
+  out.push_back(shrunk("work frame of 1920x1080", hd, {0, 0, 1920, 1080}, flow.work_pixels));
+  // The object at its own scale: the hand's box and as much again around it.
   const cv::Rect box = cv::boundingRect(hd);
   const cv::Rect region =
       cv::Rect(box.x - box.width / 2, box.y - box.height / 2, box.width * 2, box.height * 2) &
       cv::Rect(0, 0, 1920, 1080);
-  out.push_back(
-      shrunk("object model region of 1920x1080", hd, region, ObjectModelParams{}.work_pixels));
+  out.push_back(shrunk("the object's region of 1920x1080", hd, region, 4 * flow.object_pixels));
   out.push_back({"full resolution 1920x1080", hd >= 128});
   for (MaskInput& m : out) m.mask &= 1;
   return out;

@@ -32,9 +32,10 @@ struct MaskInput {
   cv::Mat mask;
 };
 
-// The hand (synthetic/, filled) as the finder's work frame holds it for a 640×480 and a 1920×1080
-// frame (FinderParams::work_pixels), as the object model's work region holds it
-// (ObjectModelParams::work_pixels), and at the full resolution of a 1920×1080 frame.
+// The hand (synthetic/, filled) as the whole frame at the flow model's working scale holds it for
+// a 640×480 and a 1920×1080 frame (FlowModelParams::work_pixels), as its region at the object's
+// own scale holds it (FlowModelParams::object_pixels), and at the full resolution of a 1920×1080
+// frame.
 std::vector<MaskInput> hand_masks();
 
 // `m` (0 or non-zero) as a Mask at (0, 0).

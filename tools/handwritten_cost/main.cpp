@@ -42,7 +42,6 @@ int main(int argc, char** argv) {
   write_header(stdout);
   pixel_duels(frames, effort, stdout);
   mask_duels(hand_masks(), effort, stdout);
-  colour_duels(frames, effort, stdout);
   text_duels(frames, effort, stdout);
   return 0;
 }

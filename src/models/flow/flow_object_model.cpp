@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "core/work_frame.hpp"
+#include "core/work_scale.hpp"
 
 namespace projtrack {
 

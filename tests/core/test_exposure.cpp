@@ -4,7 +4,6 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "core/work_frame.hpp"
 #include "projtrack/exposure.hpp"
 #include "scenes.hpp"
 
@@ -38,28 +37,6 @@ TEST(Exposure, ADimFrameIsStretchedToFullLightAndABrightOneLeftAsItIs) {
   EXPECT_TRUE(exposure_for({0, 40}, std::nan(""), 190).identity());
   EXPECT_TRUE(exposure_for({0, 40}, 140, std::nan("")).identity());
   EXPECT_TRUE(exposure_for({0, 130}, 140, 100).identity());  // never darker
-}
-
-TEST(Exposure, WorkFramesReadColoursWithTheFramesExposure) {
-  const int w = 64, h = 48;
-  const cv::Mat i420 = test::random_i420(w, h, 90);
-  ColorView c = test::i420_view(i420, w, h);
-  WorkFrame plain, exposed;
-  plain.build(c, 2, {0, 0, w / 2, h / 2});
-  c.exposure = {2.5, 10};
-  exposed.build(c, 2, {0, 0, w / 2, h / 2});
-  EXPECT_TRUE(exposed.view().exposure.identity());
-  const auto stretch = [](int v, int centre, double gain) {
-    return static_cast<int>(std::clamp<long>(std::lround(centre + (v - centre) * gain), 0, 255));
-  };
-  for (int y = 0; y < h / 2; ++y)
-    for (int x = 0; x < w / 2; ++x) {
-      ASSERT_EQ(exposed.view().luma.at(x, y), stretch(plain.view().luma.at(x, y), 10, 2.5));
-      ASSERT_EQ(exposed.view().chroma.u_at(x, y),
-                stretch(plain.view().chroma.u_at(x, y), 128, 2.5));
-      ASSERT_EQ(exposed.view().chroma.v_at(x, y),
-                stretch(plain.view().chroma.v_at(x, y), 128, 2.5));
-    }
 }
 
 }  // namespace

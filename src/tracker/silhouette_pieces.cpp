@@ -1,4 +1,4 @@
-#include "appearance/silhouette_pieces.hpp"
+#include "tracker/silhouette_pieces.hpp"
 
 #include <algorithm>
 
