@@ -23,12 +23,14 @@
 
 namespace projtrack {
 
-// Where a new object is, as the user (or nobody) said.
+// Where a new object is, as the user (or nobody) said; or, for Lost, the track's own object that
+// the model lost mid-track (its silhouette gone), to be found again near `point` (the track's
+// inner point) before the track is dropped.
 struct StartRequest {
-  enum class From { Nothing, Point, Box, Mask };
+  enum class From { Nothing, Point, Box, Mask, Lost };
   From from = From::Nothing;
-  // Point: the point; Box: the box's centre; Mask: the mask's deepest point. The estimator starts
-  // from it.
+  // Point: the point; Box: the box's centre; Mask: the mask's deepest point; Lost: where the
+  // track's next estimate would start. The estimator starts from it.
   Point2i point;
   Rect box;                       // Box and Mask: the box (of the mask)
   const cv::Mat* mask = nullptr;  // Mask: CV_8U at the frame's size, non-zero on the object

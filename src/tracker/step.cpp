@@ -42,7 +42,9 @@ StartRequest Tracker::Impl::start_request() const {
     r.from = StartRequest::From::Box;
     r.box = *t.seed_box;
   } else {
-    r.from = StartRequest::From::Point;
+    // A track with an accepted estimate whose model lost its object: found again, not a new one
+    // started at the inner point (that point may now lie on the background).
+    r.from = t.last ? StartRequest::From::Lost : StartRequest::From::Point;
   }
   return r;
 }

@@ -371,20 +371,21 @@ cv::Mat disc(int w, int h, int dx = 0) {
   return g;
 }
 
-// Automatic acquisition on fresh dots (every part of the frame changes alike) looks for nothing:
-// it says so, and does no search's work. A disc moving on fresh sensor noise still stands out and
-// is found.
-TEST(WorkBudget, AutomaticAcquisitionDoesNotSearchAFrameThatChangesEvenly) {
+// Automatic acquisition on fresh dots (every part of the frame changes alike) takes nothing: no
+// region moves apart from the picture, and it says so. A disc moving on fresh sensor noise still
+// stands out and is found.
+TEST(WorkBudget, AutomaticAcquisitionTakesNothingInAFrameThatChangesEvenly) {
   constexpr int kW = 320, kH = 240;
   TrackerParams tp;
   tp.acquisition = Acquisition::Auto;
   Tracker t;
   TrackResult r;
-  for (int i = 0; i < 4; ++i)
+  for (int i = 0; i < 8; ++i) {
     r = t.track(view(adversarial_frame(Adversary::Dots5, kW, kH, i)), EdgeParams{}, i / 30.0,
                 Method::GapTolerantFilling, Params{}, tp);
-  EXPECT_EQ(r.status, TrackStatus::Searching);
-  EXPECT_NE(r.detail.find("evenly"), std::string::npos) << r.detail;
+    EXPECT_EQ(r.status, TrackStatus::Searching) << i << ": " << r.detail;
+  }
+  EXPECT_FALSE(r.detail.empty());
   Tracker found;
   cv::RNG rng(5);
   bool acquired = false;

@@ -76,26 +76,35 @@ Observation FlowObjectModel::start(FrameEvidence& ev, const StartRequest& reques
     if (ev.budget.ran_out() || ev.budget.interrupted()) return Observation::stopped();
     return Observation::missing(start.why);
   }
-  const bool masked = request.from == StartRequest::From::Mask;
+  return begin(ev, *whole, request.from == StartRequest::From::Mask ? request.mask : nullptr,
+               outlined, start.resumed);
+}
+
+Observation FlowObjectModel::begin(FrameEvidence& ev, const WorkImages& whole, const cv::Mat* mask,
+                                   bool outlined, bool resumed) {
   const double area =
-      masked ? cv::countNonZero(*request.mask)
-             : cv::countNonZero(inside_) * static_cast<double>(whole->scale) * whole->scale;
+      mask ? cv::countNonZero(*mask)
+           : cv::countNonZero(inside_) * static_cast<double>(whole.scale) * whole.scale;
   object_pixels_ = ev.tp.flow.object_pixels;
   scale_ = object_scale(area, object_pixels_);
-  resample_mask(masked ? *request.mask : inside_, work_size(ev.width(), ev.height(), scale_),
-                object_inside_);
+  resample_mask(mask ? *mask : inside_, work_size(ev.width(), ev.height(), scale_), object_inside_);
   if (cv::countNonZero(object_inside_) == 0)
     return Observation::missing("the first silhouette covers no pixel at the object's scale");
   const WorkImages* img =
       ev.images(scale_, FlowSegmenter::images_needed_at_start(object_inside_, ev.tp.flow));
   if (!img) return Observation::stopped();
-  segmenter_.start(*whole, inside_, *img, object_inside_, ev.tp.flow, outlined);
+  segmenter_.start(whole, inside_, *img, object_inside_, ev.tp.flow, outlined);
   starting_ = true;
-  return observed(start.resumed);
+  return observed(resumed);
 }
 
-Observation FlowObjectModel::follow(FrameEvidence& ev, const Track&) {
+Observation FlowObjectModel::follow(FrameEvidence& ev, const Track& track) {
   starting_ = false;
+  if (refind_) {
+    refind_ = false;
+    Observation o;
+    if (found_again(ev, track, o)) return o;
+  }
   follow_scale(ev);
   const WorkImages* img = ev.images(scale_, segmenter_.images_needed(ev.tp.flow));
   if (!img || !pay(ev.budget, segmenter_.follow_cost(*img, ev.tp.flow)))
@@ -104,6 +113,15 @@ Observation FlowObjectModel::follow(FrameEvidence& ev, const Track&) {
     return Observation::missing(
         "nothing of the object is left where the picture's motion carried it");
   return observed(false);
+}
+
+bool FlowObjectModel::found_again(FrameEvidence& ev, const Track& track, Observation& o) {
+  const WorkImages* whole = work_images(ev);
+  if (!whole || !find_again(ev, track, *whole).found) return false;
+  o = begin(ev, *whole, nullptr, false, false);
+  starting_ = false;  // the same track goes on: judged and learned from as any followed frame
+  usual_support_ = 0;
+  return o.kind == Observation::Kind::Silhouette;
 }
 
 void FlowObjectModel::follow_scale(const FrameEvidence& ev) {
@@ -140,10 +158,13 @@ void FlowObjectModel::settle(Verdict verdict) {
   if (starting_ && verdict != Verdict::Accepted) segmenter_.forget(false);
   if (starting_ && verdict == Verdict::Accepted) {
     usual_support_ = 0;
+    largest_area_ = 0;
     searched_ = 0;
     moving_.reset();  // its frames are of before this track: a later search starts afresh
     last_searched_.release();
   }
+  if (verdict == Verdict::Accepted)
+    largest_area_ = std::max(largest_area_, segmenter_.area() * scale_ * scale_);
   if (!starting_ && verdict == Verdict::Accepted) {
     const double support = segmenter_.evidence_support();
     usual_support_ =
@@ -161,6 +182,9 @@ bool FlowObjectModel::rescale(double sx, double sy, int width, int height) {
   segmenter_.resample(sx * scale_ / scale, sy * scale_ / scale, work_size(width, height, scale),
                       scale);
   scale_ = scale;
+  // The picture may have been cut with the size (a clip joined to another): on the next frame
+  // the object is looked for by its colours near where it was, before it is followed on.
+  refind_ = true;
   return segmenter_.tracking();
 }
 
@@ -180,6 +204,7 @@ void FlowObjectModel::forget(Forget what) {
   last_searched_.release();
   searched_ = 0;
   usual_support_ = 0;
+  if (what == Forget::Everything) largest_area_ = 0;
 }
 
 SilhouetteMask FlowObjectModel::silhouette(int frame_width, int frame_height) const {

@@ -41,6 +41,13 @@ class FlowObjectModel final : public ObjectModel {
   // out of the user's box or around the user's point, or with no start what search() finds.
   FirstSilhouette first_silhouette(FrameEvidence& ev, const StartRequest& request,
                                    const Track& track, const WorkImages& img);
+  // The object started at its own scale from inside_ (the start's whole-frame work images'
+  // size), or from the user's `mask` when given; `outlined`: a mask or a box bounded it.
+  Observation begin(FrameEvidence& ev, const WorkImages& whole, const cv::Mat* mask, bool outlined,
+                    bool resumed);
+  // After a new size: the object found again by its colours near where it was and begun there,
+  // into `o` (false, following on from the resampled silhouette, when it is not found).
+  bool found_again(FrameEvidence& ev, const Track& track, Observation& o);
   // The object followed at the scale its size asks for (FlowModelParams::object_pixels).
   void follow_scale(const FrameEvidence& ev);
   // A start nobody pointed at (flow_search.cpp), into inside_ (`whole`'s size): by
@@ -48,9 +55,13 @@ class FlowObjectModel final : public ObjectModel {
   // its colours are near where it was lost and something moves, else the object that moves apart
   // from the picture's own motion (acquisition/moving_object).
   FirstSilhouette search(FrameEvidence& ev, const Track& track, const WorkImages& whole);
-  // The object lost before, by its colours: a piece of them near where it was lost, of about its
-  // area, that moved since the last frame searched (a static patch of its colours is not it).
-  bool find_by_colours(FrameEvidence& ev, const Track& track, const WorkImages& whole,
+  // The track's object, lost mid-track, found again by its colours near its last estimate
+  // (flow_search.cpp); not found: the track is refused until it is, or dropped.
+  FirstSilhouette find_again(FrameEvidence& ev, const Track& track, const WorkImages& whole);
+  // The object by its colours: a piece of them within kReach × √area of `near` (frame px), of
+  // about `area` (frame px, within leak_factor² of it), where `moved` (when not empty) says it
+  // moved since the last frame searched (a static patch of its colours is not it).
+  bool find_by_colours(FrameEvidence& ev, Point2d near, double area, const WorkImages& whole,
                        const cv::Mat& moved);
   // The moving region found (inside_) replaced by the object cut out of its box, when the cut
   // agrees with it.
@@ -65,6 +76,7 @@ class FlowObjectModel final : public ObjectModel {
   CutWorkspace cut_work_;      // the box's and the point's cuts (kept: their buffers are reused)
   MovingObjectFinder moving_;  // the moving object, when nobody points at one
   int searched_ = 0;           // frames searched since the object was lost (or forgotten)
+  double largest_area_ = 0;    // the largest area accepted on its track, frame px
   // Buffers of the search: the last frame searched, what changed since, the colours' log-odds,
   // the pieces.
   cv::Mat last_searched_, moved_, colour_odds_, pieces_, piece_stats_, piece_centres_, refined_;
@@ -74,6 +86,7 @@ class FlowObjectModel final : public ObjectModel {
   int scale_ = 1;          // the object's scale (FlowModelParams::object_pixels)
   double object_pixels_ = FlowModelParams{}.object_pixels;  // the last frame's
   bool starting_ = false;                                   // this frame's observation is a start
+  bool refind_ = false;  // the frames changed size: found_again() on the next one
   // The evidence (FlowSegmenter::evidence_support) of the track's accepted frames, followed at
   // kSupportRate; a frame with less than kLeastSupport of it is refused (veto()). On davis-dev the
   // least frame of a track held 0.43 of its median or more (drift-chicane's car in smoke), a

@@ -62,30 +62,30 @@ bool FlowObjectModel::changed_since_last(const cv::Mat& gray) {
   return comparable;
 }
 
-bool FlowObjectModel::find_by_colours(FrameEvidence& ev, const Track& track,
+bool FlowObjectModel::find_by_colours(FrameEvidence& ev, Point2d near, double area_expected,
                                       const WorkImages& whole, const cv::Mat& moved) {
   const ColourMixture& colours = segmenter_.colours();
-  if (!colours.learned() || !(track.lost_area > 0)) return false;
+  if (!colours.learned() || !(area_expected > 0)) return false;
   colour_odds_ = cv::Mat::zeros(whole.size(), CV_32F);
   colours.add_evidence(whole.bgr, ev.tp.flow.first_share, colour_odds_);
   cv::Mat object = colour_odds_ > 0;
   const int n = cv::connectedComponentsWithStats(object, pieces_, piece_stats_, piece_centres_, 8);
   const double s2 = static_cast<double>(whole.scale) * whole.scale;
   const double leak = ev.tp.leak_factor * ev.tp.leak_factor;
-  const double reach = kReach * std::sqrt(track.lost_area);
+  const double reach = kReach * std::sqrt(area_expected);
   int best = 0;
   double nearest = reach;
   for (int i = 1; i < n; ++i) {
     const double area = piece_stats_.at<int>(i, cv::CC_STAT_AREA) * s2;
-    if (area < track.lost_area / leak || area > track.lost_area * leak) continue;
-    const double dx = (piece_centres_.at<double>(i, 0) + 0.5) * whole.scale - track.lost_centroid.x;
-    const double dy = (piece_centres_.at<double>(i, 1) + 0.5) * whole.scale - track.lost_centroid.y;
+    if (area < area_expected / leak || area > area_expected * leak) continue;
+    const double dx = (piece_centres_.at<double>(i, 0) + 0.5) * whole.scale - near.x;
+    const double dy = (piece_centres_.at<double>(i, 1) + 0.5) * whole.scale - near.y;
     const double distance = std::hypot(dx, dy);
     if (distance >= nearest) continue;
     const cv::Mat piece = pieces_ == i;
     if (cv::mean(colour_odds_, piece)[0] < kLeastMeanOdds) continue;
     const double area_work = piece_stats_.at<int>(i, cv::CC_STAT_AREA);
-    if (cv::countNonZero(moved & piece) < kLeastMovedShare * area_work) continue;
+    if (!moved.empty() && cv::countNonZero(moved & piece) < kLeastMovedShare * area_work) continue;
     best = i;
     nearest = distance;
   }
@@ -115,12 +115,30 @@ FirstSilhouette FlowObjectModel::search(FrameEvidence& ev, const Track& track,
   const std::uint64_t cost = kColourSearchCost * static_cast<std::uint64_t>(whole.size().area());
   if (ev.budget.exhausted(cost)) return out;
   ev.budget.spend(cost);
-  if (changed_since_last(whole.gray) && find_by_colours(ev, track, whole, moved_)) {
+  // An object that left the frame comes back partly in view: its area is judged against the
+  // largest the track saw, not the sliver it was last seen as.
+  const double area = std::max(track.lost_area, largest_area_);
+  if (changed_since_last(whole.gray) &&
+      find_by_colours(ev, track.lost_centroid, area, whole, moved_)) {
     out.found = out.resumed = true;
     return out;
   }
   out.found = moving_.find(whole.gray, ev.budget, inside_, out.why);
   if (out.found) refine_in_box(ev, whole);
+  return out;
+}
+
+FirstSilhouette FlowObjectModel::find_again(FrameEvidence& ev, const Track& track,
+                                            const WorkImages& whole) {
+  FirstSilhouette out;
+  out.why = "the object is looked for near where it was lost, by its colours";
+  if (!track.last) return out;
+  const std::uint64_t cost = kColourSearchCost * static_cast<std::uint64_t>(whole.size().area());
+  if (ev.budget.exhausted(cost)) return out;
+  ev.budget.spend(cost);
+  const double area = std::max(track.last->area, largest_area_);
+  out.found = find_by_colours(ev, track.last->centroid, area, whole, cv::Mat());
+  if (out.found) out.why.clear();
   return out;
 }
 

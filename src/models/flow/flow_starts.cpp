@@ -29,6 +29,7 @@ FirstSilhouette FlowObjectModel::first_silhouette(FrameEvidence& ev, const Start
     start.why = cut.why;
     return start;
   }
+  if (request.from == StartRequest::From::Lost) return find_again(ev, track, img);
   return search(ev, track, img);
 }
 
