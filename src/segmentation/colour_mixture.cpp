@@ -43,6 +43,23 @@ void ColourMixture::start(const cv::Mat& bgr, const cv::Mat& inside) {
   first_surroundings_ = surroundings_;
   first_ratio_.resize(kBins);
   for (int i = 0; i < kBins; ++i) first_ratio_[i] = std::log(object_[i] / surroundings_[i]);
+  unseen_ = *std::min_element(object_.begin(), object_.end());
+}
+
+void ColourMixture::known_object_colours(const cv::Mat& bgr, cv::Mat& known) const {
+  known.create(bgr.size(), CV_8U);
+  known.setTo(0);
+  if (!learned()) return;
+  // Shown by at least a pixel or two: several times an unseen colour's pseudo-count.
+  const float least = 4 * unseen_;
+  for (int y = 0; y < bgr.rows; ++y) {
+    const cv::Vec3b* p = bgr.ptr<cv::Vec3b>(y);
+    std::uint8_t* k = known.ptr<std::uint8_t>(y);
+    for (int x = 0; x < bgr.cols; ++x) {
+      const int b = bin(p[x]);
+      if (first_object_[b] > least || object_[b] > least) k[x] = 255;
+    }
+  }
 }
 
 void ColourMixture::learn(const cv::Mat& bgr, const cv::Mat& inside, const cv::Mat& around,

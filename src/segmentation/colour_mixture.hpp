@@ -25,6 +25,11 @@ class ColourMixture {
   // (CV_32F): the mean of the first and the followed models, each `first_share` and the rest.
   void add_evidence(const cv::Mat& bgr, double first_share, cv::Mat& log_odds) const;
   bool learned() const { return !object_.empty(); }
+  // 255 in `known` (CV_8U, `bgr`'s size) where the pixel's colour is one the object showed (the
+  // first frame's or the followed model's share of it well above an unseen colour's), 0
+  // elsewhere: a colour neither class has shown reads as the object's by the pseudo-counts of a
+  // class of few pixels, which a search for the object must not take.
+  void known_object_colours(const cv::Mat& bgr, cv::Mat& known) const;
   // The first frame's log-likelihood ratio of object against surroundings for colour `c`
   // (learned() must hold): the anchor that does not drift.
   float first_ratio(const cv::Vec3b& c) const { return first_ratio_[bin(c)]; }
@@ -42,6 +47,7 @@ class ColourMixture {
 
   Histogram object_, surroundings_, first_object_, first_surroundings_;
   Histogram first_ratio_;    // log(first_object_ / first_surroundings_) per colour
+  float unseen_ = 0;         // the first object model's share of a colour it never showed
   Histogram in_, out_;       // one frame's counts
   mutable Histogram ratio_;  // add_evidence()'s log-likelihood ratio per colour
 };

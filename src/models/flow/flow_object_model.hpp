@@ -79,7 +79,8 @@ class FlowObjectModel final : public ObjectModel {
   double largest_area_ = 0;    // the largest area accepted on its track, frame px
   // Buffers of the search: the last frame searched, what changed since, the colours' log-odds,
   // the pieces.
-  cv::Mat last_searched_, moved_, colour_odds_, pieces_, piece_stats_, piece_centres_, refined_;
+  cv::Mat last_searched_, moved_, colour_odds_, pieces_, piece_stats_, piece_centres_, refined_,
+      known_;
   Mask silhouette_;        // this frame's silhouette, as the estimator reads it
   cv::Mat inside_;         // the first silhouette, at the start's working scale
   cv::Mat object_inside_;  // the same at the object's scale

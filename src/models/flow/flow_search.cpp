@@ -68,7 +68,8 @@ bool FlowObjectModel::find_by_colours(FrameEvidence& ev, Point2d near, double ar
   if (!colours.learned() || !(area_expected > 0)) return false;
   colour_odds_ = cv::Mat::zeros(whole.size(), CV_32F);
   colours.add_evidence(whole.bgr, ev.tp.flow.first_share, colour_odds_);
-  cv::Mat object = colour_odds_ > 0;
+  colours.known_object_colours(whole.bgr, known_);
+  cv::Mat object = (colour_odds_ > 0) & known_;
   const int n = cv::connectedComponentsWithStats(object, pieces_, piece_stats_, piece_centres_, 8);
   const double s2 = static_cast<double>(whole.scale) * whole.scale;
   const double leak = ev.tp.leak_factor * ev.tp.leak_factor;
