@@ -14,22 +14,23 @@ constexpr double kContext = 0.5;  // the surroundings: the box grown by half its
 // cows' shadowed ground, the camel's fence, the dog's hedge left out; the real clips' 0.805 ->
 // 0.803).
 constexpr CutSettings kBoxCut{2, true, 2, true};
+constexpr int kGrowths = 2;
 
-}  // namespace
+CutHypothesis box_hypothesis(const cv::Rect& box, double box_pixels) {
+  CutHypothesis h;
+  h.box = box;
+  h.pixels = box_pixels;
+  h.context = kContext;
+  h.centre = {box.x + box.width / 2.0, box.y + box.height / 2.0};
+  h.radii = {box.width / 2.0, box.height / 2.0};
+  return h;
+}
 
-StartOutcome object_in_box(const ColorView& frame, const Rect& box_in, double box_pixels,
-                           cv::Size out_size, CutWorkspace& ws, WorkBudget& budget,
-                           cv::Mat& inside) {
+// The object cut out of `box` (within the frame).
+StartOutcome cut_in_box(const ColorView& frame, const cv::Rect& box, double box_pixels,
+                        cv::Size out_size, CutWorkspace& ws, WorkBudget& budget, cv::Mat& inside) {
   const int width = frame.luma.width, height = frame.luma.height;
-  const cv::Rect box =
-      cv::Rect(box_in.x, box_in.y, box_in.width, box_in.height) & cv::Rect(0, 0, width, height);
-  if (box.empty()) return StartOutcome::nothing("the box holds no pixel of the frame");
-  CutHypothesis hypothesis;
-  hypothesis.box = box;
-  hypothesis.pixels = box_pixels;
-  hypothesis.context = kContext;
-  hypothesis.centre = {box.x + box.width / 2.0, box.y + box.height / 2.0};
-  hypothesis.radii = {box.width / 2.0, box.height / 2.0};
+  const CutHypothesis hypothesis = box_hypothesis(box, box_pixels);
   if (!pay(budget, problem_cost(hypothesis, width, height))) return StartOutcome::stopped();
   CutProblem problem;
   make_problem(frame, hypothesis, problem);
@@ -42,6 +43,27 @@ StartOutcome object_in_box(const ColorView& frame, const Rect& box_in, double bo
   if (cv::countNonZero(inside) == 0)
     return StartOutcome::nothing("in the box, nothing stands apart from its surroundings");
   return StartOutcome::cut();
+}
+
+}  // namespace
+
+StartOutcome object_in_box(const ColorView& frame, const Rect& box_in, double box_pixels,
+                           cv::Size out_size, CutWorkspace& ws, WorkBudget& budget,
+                           cv::Mat& inside) {
+  const cv::Rect whole(0, 0, frame.luma.width, frame.luma.height);
+  cv::Rect box = cv::Rect(box_in.x, box_in.y, box_in.width, box_in.height) & whole;
+  if (box.empty()) return StartOutcome::nothing("the box holds no pixel of the frame");
+  // A box drawn within the object (nothing in it stands apart from the ring around it) is grown to
+  // twice its sides, up to kGrowths times: the object overflows it.
+  for (int growth = 0;; ++growth) {
+    const StartOutcome out = cut_in_box(frame, box, box_pixels, out_size, ws, budget, inside);
+    if (out.kind != StartOutcome::Kind::NothingToCut) return out;
+    const cv::Rect grown =
+        cv::Rect(box.x - box.width / 2, box.y - box.height / 2, 2 * box.width, 2 * box.height) &
+        whole;
+    if (growth == kGrowths || grown == box) return out;
+    box = grown;
+  }
 }
 
 }  // namespace projtrack

@@ -30,7 +30,7 @@ int flow_level(double area, int current, double span) {
 
 void FlowSegmenter::start(const WorkImages& whole, const cv::Mat& whole_inside,
                           const WorkImages& img, const cv::Mat& inside, const FlowModelParams& p,
-                          bool outlined) {
+                          bool outlined, bool refine) {
   scale_ = img.scale;
   cv::compare(inside, 0, mask_, cv::CMP_GT);
   box_ = cv::boundingRect(mask_);
@@ -48,9 +48,38 @@ void FlowSegmenter::start(const WorkImages& whole, const cv::Mat& whole_inside,
     const cv::Rect near = colour_ring(p);
     local_colours_.learn(img.bgr, near, mask_(near), around_, p.local_colour_cells);
   }
+  if (refine) refine_start(img, p);
   flow_.reset();
   flow_level_ = flow_level(area_, DenseFlow::kPresetLevel, p.flow_span);
   flow_.compute(img.gray, flow_level_, cv::Rect(), img.filled);
+}
+
+void FlowSegmenter::refine_start(const WorkImages& img, const FlowModelParams& p) {
+  // The first silhouette as its own prior, narrowly blurred (a start's cut is right to within a
+  // few of its cells), cut again at the object's scale by the colours just learned: its outline
+  // then lies where the colours part, not on the start's coarser cells.
+  prior_(box_).setTo(1.0f, mask_(box_));
+  prior_box_ = box_;
+  cv::compare(prior_, 0.5, inside_, cv::CMP_GT);
+  split_ = MotionSplit{};
+  const int blur = static_cast<int>(kRefineSpread * std::sqrt(std::max(area_, 1.0))) | 1;
+  reach_ = reach_of_prior(2 * blur);
+  weigh_evidence(img, blur, p);
+  cv::Mat cut = mask_(reach_);
+  cut.setTo(0);
+  cv::compare(log_odds_(reach_), 0, cut, cv::CMP_GT);
+  keep_pieces_on_prior(p.keep_share);
+  const cv::Rect box = support_of(mask_(reach_), support_) + reach_.tl();
+  prior_(prior_box_).setTo(0);
+  prior_box_ = cv::Rect();
+  if (box.empty()) return;  // nothing kept: the start's own silhouette stands
+  box_ = box;
+  last_.setTo(0);
+  mask_(box_).convertTo(last_(box_), CV_32F, 1.0 / 255);
+  memory_.setTo(0);
+  last_(box_).copyTo(memory_(box_));
+  memory_box_ = box_;
+  fullest_ = area_ = cv::sum(last_(box_))[0];
 }
 
 void FlowSegmenter::relearn_on(const WorkImages& img, const FlowModelParams& p) {
@@ -299,8 +328,9 @@ void FlowSegmenter::weigh_evidence(const WorkImages& img, int blur, const FlowMo
   // The cells moved with the object (the backward flow's opposite).
   local_colours_.add_evidence(img.bgr, reach_, split_.valid ? -split_.object : cv::Point2f(),
                               p.local_colour_weight, odds);
-  add_motion_evidence(flow_.backward()(reach_), split_, p.motion_weight, p.min_separation, odds,
-                      damp_new_pixels(img, p), p.new_motion_share);
+  if (split_.valid)
+    add_motion_evidence(flow_.backward()(reach_), split_, p.motion_weight, p.min_separation, odds,
+                        damp_new_pixels(img, p), p.new_motion_share);
 }
 
 const cv::Mat& FlowSegmenter::damp_new_pixels(const WorkImages& img, const FlowModelParams& p) {

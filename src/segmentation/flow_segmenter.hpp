@@ -27,8 +27,10 @@ class FlowSegmenter {
   // a box), and the colours near each part of it are learned too (LocalColours); from a point,
   // where the first silhouette is a guess at the object's extent, they would hold the background
   // that guess took in as the object's.
+  // `refine`: the first silhouette is a start's cut (not the user's own mask), cut again on this
+  // frame at the object's scale by the colours just learned (refine_start()).
   void start(const WorkImages& whole, const cv::Mat& whole_inside, const WorkImages& img,
-             const cv::Mat& inside, const FlowModelParams& p, bool outlined);
+             const cv::Mat& inside, const FlowModelParams& p, bool outlined, bool refine);
   // The part of the frame (work px) the next follow() reads of its images; of start(), with
   // `inside` the first silhouette.
   cv::Rect images_needed(const FlowModelParams& p) const;
@@ -92,6 +94,9 @@ class FlowSegmenter {
   // The pixels of reach_ (CV_8U) whose motion counts less (FlowModelParams::new_motion_share);
   // empty when none.
   const cv::Mat& damp_new_pixels(const WorkImages& img, const FlowModelParams& p);
+  // The first silhouette cut again on the start's frame by the colours just learned.
+  void refine_start(const WorkImages& img, const FlowModelParams& p);
+  static constexpr double kRefineSpread = 0.05;  // its prior's blur, a share of √area
   // Learns the colours anew (relearn_colours()) from the prior's object, inside_, on `img`.
   void relearn_on(const WorkImages& img, const FlowModelParams& p);
   // Follows the colours of the silhouette and of a ring around it.

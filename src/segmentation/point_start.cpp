@@ -22,6 +22,25 @@ constexpr int kFinalists = 2;
 constexpr CutSettings kCoarse{2, false, 2};
 constexpr CutSettings kFine{2, true, 2};
 
+// An outline scoring less (its contrast × the share of it that is not the square's edge) is no
+// object's: davis-dev's clicks scored 0.58-0.77, a patch of a flat wall in the frame's corner
+// 0.25 (half its outline the frame's edge).
+constexpr double kLeastScore = 0.35;
+// A cut that reaches this many of the frame's sides is the background around the things in view
+// (a wall, a table), not an object the user points at; and so is one that reaches two and whose
+// outline lies this much on the square's edge (it goes on past the square: davis-dev's objects
+// 0.03 at most, a wall by the frame's corner beside a disc 0.32).
+constexpr int kBackgroundSides = 3;
+constexpr double kBackgroundTouch = 0.25;
+
+// How many of its four sides `mask` (CV_8U) reaches.
+int frame_sides_touched(const cv::Mat& mask) {
+  if (mask.empty()) return 0;
+  const int last_row = mask.rows - 1, last_col = mask.cols - 1;
+  return (cv::countNonZero(mask.row(0)) > 0) + (cv::countNonZero(mask.row(last_row)) > 0) +
+         (cv::countNonZero(mask.col(0)) > 0) + (cv::countNonZero(mask.col(last_col)) > 0);
+}
+
 struct Square {
   double score = -1;  // the outline's: contrast × (1 - touch)
   int half = 0;
@@ -105,9 +124,18 @@ StartOutcome object_at_point(const ColorView& frame, Point2i point, cv::Size out
   }
   if (best_score < 0)
     return StartOutcome::nothing("around the point, nothing to cut at the finer grain");
+  if (best_score < kLeastScore)
+    return StartOutcome::nothing(
+        "under the point, nothing stands apart: the best outline around it is mostly the edge of "
+        "the frame or of the square read, or no contrast");
   if (!pay(budget, write_cost(best_problem, width, height, out_size)))
     return StartOutcome::stopped();
   write_cut(best_problem, best, width, height, out_size, inside);
+  const int sides = frame_sides_touched(inside);
+  if (sides >= kBackgroundSides || (sides >= 2 && best.touch >= kBackgroundTouch))
+    return StartOutcome::nothing(
+        "under the point, what stands apart reaches the frame's edges and goes on past the "
+        "squares read: the background, not an object");
   return StartOutcome::cut();
 }
 

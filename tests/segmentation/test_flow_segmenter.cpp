@@ -62,7 +62,7 @@ TEST(FlowSegmenter, FollowsAnObjectOfSeveralColoursAcrossAPanningBackground) {
   FlowSegmenter segmenter;
   {
     const WorkImages img = images_of(bgr);
-    segmenter.start(img, truth, img, truth, FlowModelParams{}, false);
+    segmenter.start(img, truth, img, truth, FlowModelParams{}, false, false);
   }
   const FlowModelParams p;
   double worst = 1;
@@ -94,7 +94,7 @@ double last_overlap(const FlowModelParams& p, int last, FrameAt frame_at) {
     frame_at(t, bgr, truth);
     if (t == 0) {
       const WorkImages img = images_of(bgr);
-      segmenter.start(img, truth, img, truth, p, false);
+      segmenter.start(img, truth, img, truth, p, false, false);
       continue;
     }
     if (!segmenter.follow(images_of(bgr), p)) return 0;

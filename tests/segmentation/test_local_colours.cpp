@@ -105,7 +105,7 @@ double last_overlap(bool outlined) {
     img.frame_width = bgr.cols;
     img.frame_height = bgr.rows;
     if (t == 0) {
-      segmenter.start(img, truth, img, truth, p, outlined);
+      segmenter.start(img, truth, img, truth, p, outlined, false);
       continue;
     }
     if (!segmenter.follow(img, p)) return 0;

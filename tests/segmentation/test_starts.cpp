@@ -203,8 +203,9 @@ TEST(Starts, AFlatPictureHasNothingToCutSaidAtOnce) {
       EXPECT_EQ(o.kind, StartOutcome::Kind::NothingToCut);
       EXPECT_NE(o.why.find("nothing to cut"), std::string::npos) << o.why;
     }
-    // Read, found flat, left: a tenth of a cut's work.
-    EXPECT_LT(box_budget.spent(), 300000U);
+    // Read, found flat, left: a tenth of a cut's work (the box read three times: grown twice, in
+    // case it was drawn within a larger object).
+    EXPECT_LT(box_budget.spent(), 500000U);
     EXPECT_LT(point_budget.spent(), 300000U);
   }
 }

@@ -93,7 +93,7 @@ Observation FlowObjectModel::begin(FrameEvidence& ev, const WorkImages& whole, c
   const WorkImages* img =
       ev.images(scale_, FlowSegmenter::images_needed_at_start(object_inside_, ev.tp.flow));
   if (!img) return Observation::stopped();
-  segmenter_.start(whole, inside_, *img, object_inside_, ev.tp.flow, outlined);
+  segmenter_.start(whole, inside_, *img, object_inside_, ev.tp.flow, outlined, mask == nullptr);
   starting_ = true;
   return observed(resumed);
 }
