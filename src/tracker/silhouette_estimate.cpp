@@ -105,8 +105,11 @@ PieceSum estimate_pieces(const SilhouetteView& s, const std::optional<Point2i>& 
     if (budget.exhausted(cost)) return stopped_for_want_of_work(budget, k);
     budget.spend(cost);
     lay_out(b.pieces.piece(k), s.scale, r, b.barrier);
+    // The inner point starts the first estimate; the split's, from each piece's deepest point (a
+    // fill from the inner point that covered little of the silhouette was walled in there: a
+    // pocket among specks of its outline).
     Point2i start;
-    if (k == 0 && inner &&
+    if (!split && k == 0 && inner &&
         b.pieces.piece_at({to_work(inner->x, s.scale), to_work(inner->y, s.scale)}) == 0) {
       start = *inner;
     } else {
@@ -167,7 +170,9 @@ Features estimate_on_silhouette(const SilhouetteView& s, const std::optional<Poi
     return total;
   }
   if (total.area > 0) total.centroid = {sum.sx / total.area, sum.sy / total.area};
-  total.bbox = sum.box.rect();
+  // The object's box is its silhouette's (what the mask and the overlay show): a grid's fill
+  // reaches the outline from lines a cell apart, and its own box may fall short by as much.
+  total.bbox = to_frame(moments(s.mask).bbox, s.scale, s.width, s.height) | sum.box.rect();
   total.reach = sum.reach.rect();
   if (trace) trace_outline(s, layout_rect(s), *trace);
   if (total.valid()) total.status = border_status(total.bbox, s.width, s.height);

@@ -28,10 +28,10 @@ BOX = (308, 126, 104, 256)  # the cup on frame 0 at 640x480 (a user's box)
 FRAMES = 60
 CHANGE = 20
 FPS = 30
-# In gray the cup is lost from frame 51 on, however the track started (measured: from gray frame
-# 0, or after 20 or 40 colour frames; the hand turns it and luma alone no longer holds it): the
-# track after the format change is judged before that.
-GRAY_HOLDS = 51
+# In gray the cup joins the arm that holds it from frame 42 on, however the track started
+# (measured: after 20 or 40 colour frames; the hand and the dark sleeve have the cup's luma and
+# move with it): the track after the format change is judged before that.
+GRAY_HOLDS = 42
 JOINED = 30
 
 
