@@ -69,7 +69,6 @@ void FlowSegmenter::refine_start(const WorkImages& img, const FlowModelParams& p
   cut.setTo(0);
   cv::compare(log_odds_(reach_), 0, cut, cv::CMP_GT);
   keep_pieces_on_prior(p.keep_share);
-  fill_specks();
   const cv::Rect box = support_of(mask_(reach_), support_) + reach_.tl();
   prior_(prior_box_).setTo(0);
   prior_box_ = cv::Rect();
@@ -175,7 +174,6 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
   mask_(was).setTo(0);
   cv::compare(log_odds_(reach_), 0, mask_(reach_), cv::CMP_GT);
   keep_pieces_on_prior(p.keep_share);
-  fill_specks();
   evidence_ = evidence_within(mask_(reach_));
   box_ = support_of(mask_(reach_), support_) + reach_.tl();
   if (box_.empty()) {
@@ -369,23 +367,6 @@ const cv::Mat& FlowSegmenter::damp_new_pixels(const WorkImages& img, const FlowM
       n[x] = !n[x] && colours_.first_ratio(c[x]) < 0 ? 255 : 0;
   }
   return new_pixels_;
-}
-
-void FlowSegmenter::fill_specks() {
-  // Holes of a few pixels where the evidence wavered (a thumb's shading across a cup) are specks,
-  // not the object's: an outline around each would wall in a pocket of an estimate.
-  const cv::Rect b = support_of(mask_(reach_), support_) + reach_.tl();
-  if (b.empty()) return;
-  cv::compare(mask_(b), 0, holes_, cv::CMP_EQ);
-  const int n = cv::connectedComponentsWithStats(holes_, labels_, hole_stats_, hole_centres_, 4);
-  const double least = kSpeckShare * cv::countNonZero(mask_(b));
-  for (int i = 1; i < n; ++i) {
-    const int* st = hole_stats_.ptr<int>(i);
-    const bool inside = st[cv::CC_STAT_LEFT] > 0 && st[cv::CC_STAT_TOP] > 0 &&
-                        st[cv::CC_STAT_LEFT] + st[cv::CC_STAT_WIDTH] < b.width &&
-                        st[cv::CC_STAT_TOP] + st[cv::CC_STAT_HEIGHT] < b.height;
-    if (inside && st[cv::CC_STAT_AREA] < least) mask_(b).setTo(255, labels_ == i);
-  }
 }
 
 double FlowSegmenter::evidence_within(const cv::Mat& mask) const {

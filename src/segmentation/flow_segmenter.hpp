@@ -109,9 +109,6 @@ class FlowSegmenter {
   void remember(const FlowModelParams& p);
   // The mean of the evidence beside the prior (log_odds_ - prior_odds_) over `mask` (reach_'s).
   double evidence_within(const cv::Mat& mask) const;
-  // Fills the silhouette's holes under kSpeckShare of its area.
-  void fill_specks();
-  static constexpr double kSpeckShare = 0.005;
   // Keeps the pieces of the thresholded posterior that hold enough of the prior.
   void keep_pieces_on_prior(double keep_share);
 
@@ -140,7 +137,6 @@ class FlowSegmenter {
   cv::Mat prior_odds_;   // the prior's log-odds within reach_
   double evidence_ = 0;  // evidence_support()
   cv::Mat map_, support_, log_odds_, inside_, labels_, ring_count_, around_;  // buffers
-  cv::Mat holes_, hole_stats_, hole_centres_;                                 // fill_specks()
   cv::Mat new_pixels_;        // buffer of damp_new_pixels()
   std::vector<double> held_;  // the prior each piece holds
 };
