@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "models/flow/flow_object_model.hpp"
+#include "segmentation/arm_trim.hpp"
 #include "segmentation/box_start.hpp"
 #include "segmentation/point_start.hpp"
 
@@ -27,6 +28,10 @@ FirstSilhouette FlowObjectModel::first_silhouette(FrameEvidence& ev, const Start
             : object_at_point(ev.frame, request.point, img.size(), cut_work_, ev.budget, inside_);
     start.found = cut.kind == StartOutcome::Kind::Cut;
     start.why = cut.why;
+    // A click on a held object takes in the arm that holds it (segmentation/arm_trim).
+    if (start.found && request.from == StartRequest::From::Point)
+      trim_arm(img.bgr, {request.point.x / img.scale, request.point.y / img.scale}, ev.budget,
+               inside_);
     return start;
   }
   if (request.from == StartRequest::From::Lost) return find_again(ev, track, img);
