@@ -10,6 +10,7 @@
 #include "harness.hpp"
 #include "output.hpp"
 #include "projtrack/method.hpp"
+#include "projtrack/names.hpp"
 #include "projtrack/tracker.hpp"
 #include "sections.hpp"
 
@@ -29,21 +30,28 @@ void allocations_and_memory(Clip& clip, int frames) {
   constexpr int kCounted = 200;  // frames whose allocations are counted, after warm-up
   const int mark = std::min(1000, frames / 2);  // memory is compared from here to the last frame
   const std::size_t n = clip.gray.size();
-  for (Method method : kAllMethods) {  // the library alone
-    Tracker t;
-    TrackerParams tp;
-    tp.acquisition = Acquisition::Manual;
-    t.seed(clip.seeds[0]);
-    auto frame = [&](std::size_t i) {
-      const cv::Mat& g = clip.gray[i % n];
-      t.track(ImageView(g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step)), EdgeParams{},
-              static_cast<double>(i) / 30, method, Params{}, tp);
-    };
-    for (std::size_t i = 0; i < 2 * n; ++i) frame(i);  // buffers grow to the largest region
-    const long before = allocations.load();
-    for (std::size_t i = 2 * n; i < 2 * n + kCounted; ++i) frame(i);
-    row("allocations", &clip, "Tracker::track " + std::string(method_name(method)), "per_frame",
-        static_cast<double>(allocations.load() - before) / kCounted);
+  // The library alone, with the default model and with the edges model (which allocates nothing
+  // of its own: the default's count is OpenCV's calls within it as much as ours).
+  for (ObjectModelKind model : {TrackerParams{}.model, ObjectModelKind::Edges}) {
+    const std::string suffix =
+        model == TrackerParams{}.model ? "" : std::string(" (") + nick_of(model) + " model)";
+    for (Method method : kAllMethods) {
+      Tracker t;
+      TrackerParams tp;
+      tp.acquisition = Acquisition::Manual;
+      tp.model = model;
+      t.seed(clip.seeds[0]);
+      auto frame = [&](std::size_t i) {
+        const cv::Mat& g = clip.gray[i % n];
+        t.track(ImageView(g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step)),
+                EdgeParams{}, static_cast<double>(i) / 30, method, Params{}, tp);
+      };
+      for (std::size_t i = 0; i < 2 * n; ++i) frame(i);  // buffers grow to the largest region
+      const long before = allocations.load();
+      for (std::size_t i = 2 * n; i < 2 * n + kCounted; ++i) frame(i);
+      row("allocations", &clip, "Tracker::track " + std::string(method_name(method)) + suffix,
+          "per_frame", static_cast<double>(allocations.load() - before) / kCounted);
+    }
   }
   // The element, less what the harness itself allocates around an element that does nothing.
   auto per_frame = [&](const std::string& launch) {

@@ -72,21 +72,27 @@ cv::Rect carry_along_flow(const cv::Mat& last, const cv::Rect& held, const cv::M
 namespace {
 
 // The median of each component of the flow where `where` is set, from at most ~4 000 samples
-// (a regular subsample: the median of a region needs no more).
-bool median_flow(const cv::Mat& flow, const cv::Mat& where, int count, cv::Point2f& out) {
+// (a regular subsample: the median of a region needs no more). `samples` is a buffer.
+bool median_flow(const cv::Mat& flow, const cv::Mat& where, int count, std::vector<float>& samples,
+                 cv::Point2f& out) {
   if (count == 0) return false;
   const int step = std::max(1, static_cast<int>(std::sqrt(count / 4000.0)));
-  std::vector<float> xs, ys;
+  const std::size_t most = static_cast<std::size_t>((flow.rows + step - 1) / step) *
+                           static_cast<std::size_t>((flow.cols + step - 1) / step);
+  if (samples.size() < 2 * most) samples.resize(2 * most);  // only grows: no allocation a frame
+  float* xs = samples.data();
+  float* ys = xs + most;
+  std::size_t n = 0;
   for (int y = 0; y < flow.rows; y += step) {
     const cv::Point2f* f = flow.ptr<cv::Point2f>(y);
     const std::uint8_t* w = where.ptr<std::uint8_t>(y);
     for (int x = 0; x < flow.cols; x += step)
-      if (w[x]) xs.push_back(f[x].x), ys.push_back(f[x].y);
+      if (w[x]) xs[n] = f[x].x, ys[n++] = f[x].y;
   }
-  if (xs.empty()) return false;
-  const auto mid = xs.size() / 2;
-  std::nth_element(xs.begin(), xs.begin() + mid, xs.end());
-  std::nth_element(ys.begin(), ys.begin() + mid, ys.end());
+  if (n == 0) return false;
+  const std::size_t mid = n / 2;
+  std::nth_element(xs, xs + mid, xs + n);
+  std::nth_element(ys, ys + mid, ys + n);
   out = {xs[mid], ys[mid]};
   return true;
 }
@@ -94,15 +100,15 @@ bool median_flow(const cv::Mat& flow, const cv::Mat& where, int count, cv::Point
 }  // namespace
 
 MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring, cv::Mat& count,
-                         cv::Mat& around) {
+                         cv::Mat& around, std::vector<float>& samples) {
   MotionSplit s;
   const int area = cv::countNonZero(inside);
   if (area == 0) return s;
   const int r = std::max(1, static_cast<int>(ring * std::sqrt(static_cast<double>(area))));
   const cv::Rect near = square_ring(inside, r, count, around);
   const cv::Mat in = inside(near), moved = flow(near);
-  s.valid = median_flow(moved, in, area, s.object) &&
-            median_flow(moved, around, cv::countNonZero(around), s.surroundings);
+  s.valid = median_flow(moved, in, area, samples, s.object) &&
+            median_flow(moved, around, cv::countNonZero(around), samples, s.surroundings);
   if (s.valid) s.separation = static_cast<float>(cv::norm(s.object - s.surroundings));
   return s;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace projtrack {
 
@@ -37,10 +38,10 @@ struct MotionSplit {
   float separation = 0;  // how far apart the two motions are, work px a frame
   bool valid = false;    // both regions have pixels
 };
-// `count` and `around` are buffers (a ring of a large object spans most of the frame: kept from
-// frame to frame, they are not allocated and paged in again each time).
+// `count`, `around` and `samples` are buffers (a ring of a large object spans most of the frame:
+// kept from frame to frame, they are not allocated and paged in again each time).
 MotionSplit split_motion(const cv::Mat& flow, const cv::Mat& inside, double ring, cv::Mat& count,
-                         cv::Mat& around);
+                         cv::Mat& around, std::vector<float>& samples);
 
 // Adds to `log_odds` (CV_32F) each pixel's evidence of moving with the object rather than with
 // its surroundings: a Gaussian log-likelihood ratio whose spread is half the motions' separation,

@@ -268,7 +268,8 @@ void FlowSegmenter::predict(const FlowModelParams& p) {
   prior_(prior_box_).setTo(0);
   prior_box_ = carry_along_flow(last_, box_, flow_.backward(), flow_.measured(), map_, prior_);
   cv::compare(prior_, 0.5, inside_, cv::CMP_GT);
-  split_ = split_motion(flow_.backward(), inside_, p.motion_ring, ring_count_, around_);
+  split_ =
+      split_motion(flow_.backward(), inside_, p.motion_ring, ring_count_, around_, motion_samples_);
   if (!split_.valid || p.memory_weight <= 0) return;
   // The backward flow says where the object came from: it moved by the opposite.
   // Only the memory's box, moved and grown by a pixel for the interpolation, is warped.

@@ -137,6 +137,7 @@ class FlowSegmenter {
   cv::Mat prior_odds_;   // the prior's log-odds within reach_
   double evidence_ = 0;  // evidence_support()
   cv::Mat map_, support_, log_odds_, inside_, labels_, ring_count_, around_;  // buffers
+  std::vector<float> motion_samples_;                                         // a buffer
   cv::Mat new_pixels_;        // buffer of damp_new_pixels()
   std::vector<double> held_;  // the prior each piece holds
 };

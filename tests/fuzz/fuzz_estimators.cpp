@@ -49,6 +49,21 @@ void check_features(const Features& f, const ImageView& edges, Method m) {
   }
 }
 
+// A model with a silhouette measures the estimate on its outline, not on the edges given: the
+// features are finite and inside the frame, and the inner point is on the silhouette.
+void check_on_silhouette(const Tracker& tracker, const Features& f, int w, int h) {
+  check(std::isfinite(f.centroid.x) && std::isfinite(f.centroid.y) && std::isfinite(f.area) &&
+            f.area >= 0,
+        "finite features");
+  check(!f.bbox.empty() && clip_to_frame(f.bbox, w, h) == f.bbox, "bounding box inside the frame");
+  check(f.inner_point.x >= 0 && f.inner_point.x < w && f.inner_point.y >= 0 && f.inner_point.y < h,
+        "inner point inside the frame");
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(w) * h);
+  if (tracker.silhouette(mask.data(), w, h, w))
+    check(mask[static_cast<std::size_t>(f.inner_point.y) * w + f.inner_point.x] != 0,
+          "inner point on the silhouette");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -133,8 +148,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int frame = 0; frame < 3; ++frame) {
     const TrackResult r = tracker.track(edges, detected.empty() ? edges : detected, frame / 30.0,
                                         any_method(in), p, tp);
-    if (has_features(r.status))
-      check_features(r.features, detected.empty() ? edges : detected, static_cast<Method>(0));
+    if (has_features(r.status)) {
+      if (tp.model == ObjectModelKind::Edges)
+        check_features(r.features, detected.empty() ? edges : detected, static_cast<Method>(0));
+      else
+        check_on_silhouette(tracker, r.features, w, h);
+    }
     if (r.has_pose)
       check(std::isfinite(r.pose.x) && std::isfinite(r.pose.y) && std::isfinite(r.pose.depth),
             "finite pose");

@@ -192,7 +192,8 @@ TEST(SplitMotion, ReadsTheRingAsADilationWouldAtTheFrameEdge) {
   cv::Mat inside = cv::Mat::zeros(50, 50, CV_8U);
   inside(cv::Rect(0, 0, 10, 10)).setTo(255);
   cv::Mat count, around;
-  const MotionSplit split = split_motion(flow, inside, 0.5, count, around);
+  std::vector<float> samples;
+  const MotionSplit split = split_motion(flow, inside, 0.5, count, around, samples);
   ASSERT_TRUE(split.valid);
   EXPECT_FLOAT_EQ(split.object.x, -3);
   EXPECT_FLOAT_EQ(split.surroundings.x, 2);
@@ -205,7 +206,8 @@ TEST(MotionEvidence, FavoursPixelsThatMoveWithTheObject) {
   cv::Mat inside = cv::Mat::zeros(60, 60, CV_8U);
   inside(cv::Rect(22, 22, 16, 16)).setTo(255);
   cv::Mat count, around;
-  const MotionSplit split = split_motion(flow, inside, 0.5, count, around);
+  std::vector<float> samples;
+  const MotionSplit split = split_motion(flow, inside, 0.5, count, around, samples);
   ASSERT_TRUE(split.valid);
   EXPECT_NEAR(split.object.x, -4, 1e-6);
   EXPECT_NEAR(split.surroundings.x, 1, 1e-6);
