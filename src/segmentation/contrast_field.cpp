@@ -74,6 +74,7 @@ void make_field(const CutProblem& pr, ContrastField& f) {
         ++pairs;
       }
   const double mean_d2 = std::max(1e-6, pairs ? total / pairs : 0);
+  f.mean_d2 = mean_d2;
   for (int y = 0; y < pr.h; ++y)
     for (int x = 0; x < pr.w; ++x)
       for (int d = 0; d < 8; d += 2) {

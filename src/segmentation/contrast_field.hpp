@@ -21,6 +21,7 @@ struct ContrastField {
   std::vector<int> ring_bin;      // per surroundings sample
   std::vector<cv::Vec3f> colour;  // per bin: the mean colour of its cells and samples
   cv::Vec3f bin_spread;           // a bin's own variance a channel (grey levels²)
+  double mean_d2 = 1;             // the weights' scale: the mean squared difference around
   std::vector<float> weight;      // 8 per cell: exp(-β d²), √½ that on a diagonal; 0: none
   std::vector<float> step;        // 8 per cell: the geodesic length of the step
 

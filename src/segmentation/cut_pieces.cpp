@@ -11,6 +11,18 @@ namespace projtrack {
 
 namespace {
 
+// Neighbouring pixels differing by ~4 grey levels a channel (3 × 4²) are noise and shading, not
+// an outline: a flat white ellipse's middle measured 12-16, the squares around a small blurred
+// ball 108-185 (its outline spread over pixels), textured scenes far more. A cell of s × s pixels
+// averages the noise down to 1/s² of it; a cell smaller than a pixel (s < 1) is interpolated, and
+// its neighbours differ by s² of what pixels do.
+constexpr double kNoiseD2 = 48;
+
+double noise_d2(const CutProblem& pr) {
+  const double s2 = 1 / std::max(1e-6, pr.in.kx * pr.in.ky);  // a cell's area, frame px
+  return kNoiseD2 * std::min(s2, 1 / s2);
+}
+
 // From a box, the pieces kept: at least this share of the largest (a limb the cut parted from the
 // body stays, a speck of the object's colour in the corner does not).
 constexpr double kLeastPiece = 0.1;
@@ -51,6 +63,10 @@ void keep_pieces(const CutProblem& pr, CutWorkspace& ws, CutResult& out) {
 }
 
 void score_outline(const CutProblem& pr, const ContrastField& f, CutResult& out) {
+  // Contrast is read against the grid's own mean difference (GrabCut's β), but no less than the
+  // noise's: within a flat region (a white ellipse's middle) the mean is the sensor's noise, and
+  // against it a noise blob's outline read as sharp as an object's.
+  const double share = f.mean_d2 / std::max(f.mean_d2, noise_d2(pr));
   long edges = 0, touching = 0;
   double contrast = 0;
   for (int y = 0; y < pr.h; ++y)
@@ -64,7 +80,7 @@ void score_outline(const CutProblem& pr, const ContrastField& f, CutResult& out)
         ++edges;
         // The frame's edge counts as a sharp outline but as the box's edge too.
         if (beyond || pr.fixed[v * pr.w + u] == CutProblem::kSurroundings) ++touching;
-        contrast += 1 - f.weight[8 * i + d];
+        contrast += 1 - std::pow(f.weight[8 * i + d], share);
       }
     }
   out.contrast = edges ? contrast / edges : 0;

@@ -20,20 +20,24 @@ sys.path.insert(0, os.path.join(bench_real, "..", "common"))
 from results import Results  # noqa: E402
 
 FRAMES = 40   # a segment: the first FRAMES frames from the first in-view frame
-MARGIN = 0.1  # a threshold is the share measured on 2026-11-25 less this (not below 0)
+MARGIN = 0.1  # a threshold is the share measured on 2026-11-29 less this (not below 0)
 ENTRIES = ["cup", "balle1", "cube", "ellipse-edge"]
-# (entry, start): (kept, kept centroid only) measured by today's tracker on the segment.
+# (entry, start): (kept, kept centroid only) measured by the default (flow) model on the segment.
+# Below what the removed appearance model kept on the same segments (its values in git history):
+# cup's lower quarter points 0.20 / 0.38 (1.0: the first cut from a click beside the thumb takes
+# the hand in, and the arm follows it into view), cup with no seed 0 (0.93), balle1's lower
+# quarter points 0 (0.53: the first cut from a click on the small ball's lower half is the dark
+# region behind it, which stays while the ball flies off), ellipse-edge's deepest point and
+# quarter 2 0.75, quarter 4 0.35 (1.0). Above it: cube (0 before) from quarters 1 and 3 and the
+# box, balle1's area from the deepest point, its upper quarters and the box.
 MEASURED = {
-    ("cup", "deepest"): (1.0, 1.0), ("cup", "quarter"): (1.0, 1.0), ("cup", "box"): (1.0, 1.0),
-    ("cup", "none"): (0.925, 0.925),
-    # The ball is held on every frame of the segment (centroid only); the area condition fails
-    # while the first silhouette is its bright core, until the colours along its outline are
-    # learned (about half the segment from the deepest point or a box).
-    ("balle1", "deepest"): (0.525, 1.0), ("balle1", "quarter"): (0.525, 1.0),
-    ("balle1", "box"): (0.525, 1.0), ("balle1", "none"): (0.6, 0.625),
-    ("cube", "deepest"): (0.0, 0.0), ("cube", "quarter"): (0.0, 0.0), ("cube", "box"): (0.0, 0.0),
-    ("cube", "none"): (0.0, 0.0),
-    ("ellipse-edge", "deepest"): (1.0, 1.0), ("ellipse-edge", "quarter"): (1.0, 1.0),
+    ("cup", "deepest"): (1.0, 1.0), ("cup", "quarter"): (0.2, 0.2), ("cup", "box"): (1.0, 1.0),
+    ("cup", "none"): (0.0, 0.0),
+    ("balle1", "deepest"): (0.975, 0.975), ("balle1", "quarter"): (0.0, 0.0),
+    ("balle1", "box"): (1.0, 1.0), ("balle1", "none"): (0.7, 0.7),
+    ("cube", "deepest"): (0.075, 0.9), ("cube", "quarter"): (0.0, 0.0),
+    ("cube", "box"): (0.675, 0.675), ("cube", "none"): (0.025, 0.025),
+    ("ellipse-edge", "deepest"): (0.75, 0.75), ("ellipse-edge", "quarter"): (0.35, 0.675),
     ("ellipse-edge", "box"): (1.0, 1.0), ("ellipse-edge", "none"): (0.0, 0.0),
 }
 
