@@ -33,7 +33,7 @@ void FlowSegmenter::start(const WorkImages& whole, const cv::Mat& whole_inside,
                           bool outlined, bool refine) {
   scale_ = img.scale;
   cv::compare(inside, 0, mask_, cv::CMP_GT);
-  box_ = cv::boundingRect(mask_);
+  box_ = last_box_ = cv::boundingRect(mask_);
   mask_.convertTo(last_, CV_32F, 1.0 / 255);
   last_.copyTo(memory_);
   memory_box_ = box_;
@@ -73,7 +73,7 @@ void FlowSegmenter::refine_start(const WorkImages& img, const FlowModelParams& p
   prior_(prior_box_).setTo(0);
   prior_box_ = cv::Rect();
   if (box.empty()) return;  // nothing kept: the start's own silhouette stands
-  box_ = box;
+  box_ = last_box_ = box;
   last_.setTo(0);
   mask_(box_).convertTo(last_(box_), CV_32F, 1.0 / 255);
   memory_.setTo(0);
@@ -84,8 +84,8 @@ void FlowSegmenter::refine_start(const WorkImages& img, const FlowModelParams& p
 
 void FlowSegmenter::hold_in_place() {
   prior_(prior_box_).setTo(0);
-  last_(box_).copyTo(prior_(box_));
-  prior_box_ = box_;
+  last_(last_box_).copyTo(prior_(last_box_));
+  prior_box_ = last_box_;
   cv::compare(prior_, 0.5, inside_, cv::CMP_GT);
   split_ = MotionSplit{};
 }
@@ -115,7 +115,7 @@ void FlowSegmenter::resample(double rx, double ry, cv::Size size, int scale) {
   resized(memory_, cv::INTER_LINEAR);
   prior_ = cv::Mat::zeros(size, CV_32F);
   prior_box_ = cv::Rect();
-  box_ = support_of(last_, support_);
+  box_ = last_box_ = support_of(last_, support_);
   memory_box_ = support_of(memory_, support_);
   if (box_.empty()) {
     forget(false);
@@ -136,7 +136,7 @@ void FlowSegmenter::forget(bool colours) {
   last_.release();
   memory_.release();
   prior_.release();
-  box_ = memory_box_ = prior_box_ = cv::Rect();
+  box_ = last_box_ = memory_box_ = prior_box_ = cv::Rect();
   flow_.reset();
   local_colours_.forget();
   if (colours) colours_.forget();
@@ -169,9 +169,8 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
   const int blur = static_cast<int>(p.prior_spread * std::sqrt(area)) | 1;
   reach_ = reach_of_prior(2 * blur);
   weigh_evidence(img, blur, p);
-  // The last silhouette's box is the only part of mask_ and last_ not zero: cleared, not the whole.
-  const cv::Rect was = box_;
-  mask_(was).setTo(0);
+  // The last silhouette's box is the only part of mask_ not zero: cleared, not the whole.
+  mask_(box_).setTo(0);
   cv::compare(log_odds_(reach_), 0, mask_(reach_), cv::CMP_GT);
   keep_pieces_on_prior(p.keep_share);
   evidence_ = evidence_within(mask_(reach_));
@@ -180,11 +179,31 @@ bool FlowSegmenter::follow(const WorkImages& img, const FlowModelParams& p) {
     forget(false);
     return false;
   }
+  return true;  // accept() or refuse() settles what the cut leaves
+}
+
+void FlowSegmenter::accept(const WorkImages& img, const FlowModelParams& p) {
   learn_colours(img, p);
-  last_(was).setTo(0);
+  last_(last_box_).setTo(0);
   mask_(box_).convertTo(last_(box_), CV_32F, 1.0 / 255);
+  last_box_ = box_;
   remember(p);
-  return true;
+}
+
+void FlowSegmenter::refuse() {
+  // The cut refused is not the object; the last accepted silhouette carried along this frame's
+  // motion (the prior's object) is, and nothing is learned of this frame.
+  mask_(box_).setTo(0);
+  cv::compare(prior_(prior_box_), 0.5, mask_(prior_box_), cv::CMP_GT);
+  box_ = support_of(mask_(prior_box_), support_) + prior_box_.tl();
+  if (box_.empty()) {
+    forget(false);
+    return;
+  }
+  last_(last_box_).setTo(0);
+  mask_(box_).convertTo(last_(box_), CV_32F, 1.0 / 255);
+  last_box_ = box_;
+  area_ = cv::sum(last_(box_))[0];
 }
 
 namespace {

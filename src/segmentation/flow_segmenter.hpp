@@ -42,9 +42,15 @@ class FlowSegmenter {
   std::uint64_t follow_cost(const WorkImages& img, const FlowModelParams& p) const;
   // What start() on `img` costs, work units.
   static std::uint64_t start_cost(const WorkImages& img);
-  // The object on the next frame. False when nothing of it is left (or the frame's size changed):
-  // the silhouette is then empty.
+  // The object on the next frame: its cut, silhouette(). False when nothing of it is left (or
+  // the frame's size changed): the silhouette is then empty. The cut is the next frame's
+  // starting point and learned from only once accept()ed; refuse() takes it back.
   bool follow(const WorkImages& img, const FlowModelParams& p);
+  // The cut on `img` (follow()'s) is the object: its colours are learned, and it is carried on.
+  void accept(const WorkImages& img, const FlowModelParams& p);
+  // The cut is not the object: the silhouette is the last accepted one carried along this
+  // frame's motion (empty, not tracking, when nothing of it is left), and nothing is learned.
+  void refuse();
   // This frame's silhouette, 255 on the object (CV_8U, work size); empty when there is none.
   const cv::Mat& silhouette() const { return mask_; }
   // The silhouette's bounding box (work px): silhouette() is zero outside it.
@@ -124,7 +130,8 @@ class FlowSegmenter {
   // the boxes, not the whole frame.
   cv::Mat last_;         // the last silhouette, CV_32F 0 or 1
   cv::Mat mask_;         // this frame's, CV_8U 0 or 255
-  cv::Rect box_;         // mask_'s and last_'s bounding box
+  cv::Rect box_;         // mask_'s bounding box
+  cv::Rect last_box_;    // last_'s (box_ but between follow() and accept() or refuse())
   cv::Mat memory_;       // the fullest recent silhouette, CV_32F, moved with the object
   cv::Rect memory_box_;  // its bounding box
   cv::Mat prior_;        // this frame's prior, CV_32F

@@ -19,7 +19,7 @@ namespace projtrack {
 namespace {
 
 // A frame of the contract's scene: an orange ellipse moving right over a grey, softly textured
-// background; `blank` draws the whole frame one grey level instead.
+// background; `blank` draws the whole frame one grey level instead; `size` scales the ellipse.
 struct SceneFrame {
   cv::Mat i420, gray, inside;  // the frame (I420 and its luma alone), the object's pixels
   Point2d centroid;
@@ -32,7 +32,7 @@ struct SceneFrame {
   }
 };
 
-SceneFrame scene_frame(int i, int w = 320, int h = 240, int blank = -1) {
+SceneFrame scene_frame(int i, int w = 320, int h = 240, int blank = -1, double size = 1) {
   cv::Mat bgr(h, w, CV_8UC3);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
@@ -43,7 +43,7 @@ SceneFrame scene_frame(int i, int w = 320, int h = 240, int blank = -1) {
   SceneFrame f;
   f.inside = cv::Mat::zeros(h, w, CV_8U);
   const cv::Point centre(static_cast<int>(w * (0.3 + 0.008 * i)), h / 2);
-  const cv::Size axes(w / 9, h / 7);
+  const cv::Size axes(static_cast<int>(size * w / 9), static_cast<int>(size * h / 7));
   cv::ellipse(f.inside, centre, axes, 0, 0, 360, 255, cv::FILLED);
   bgr.setTo(cv::Scalar(40, 140, 230), f.inside);
   if (blank >= 0) bgr.setTo(cv::Scalar::all(blank));
@@ -184,6 +184,28 @@ TEST_P(ModelContract, ABlankFrameIsNotTheObject) {
   }
 }
 
+TEST_P(ModelContract, ARefusedFrameTeachesNothing) {
+  // The object swells to over 3× its area for one frame (a leak's size): the frame is refused,
+  // the silhouette held is the last accepted one (not the swollen cut), and the track goes on.
+  Tracker t;
+  const Settings s = settings_for(kind());
+  start(t, StartKind::Box, scene_frame(0));
+  for (int i = 0; i < 6; ++i)
+    ASSERT_TRUE(on_object(t.track(scene_frame(i).colour(), i, s), scene_frame(i)));
+  const TrackResult swollen = t.track(scene_frame(6, 320, 240, -1, 1.8).colour(), 6, s);
+  ASSERT_EQ(swollen.status, TrackStatus::Lost) << model() << ": " << swollen.detail;
+  std::vector<std::uint8_t> mask(320 * 240);
+  if (t.silhouette(mask.data(), 320, 240, 320)) {
+    const double held = cv::countNonZero(cv::Mat(240, 320, CV_8U, mask.data()));
+    const double area = scene_frame(6).area;
+    EXPECT_GT(held, 0.5 * area) << model();
+    EXPECT_LT(held, 1.5 * area) << model() << ": the refused cut was kept";
+  }
+  for (int i = 7; i < 12; ++i)
+    EXPECT_TRUE(on_object(t.track(scene_frame(i).colour(), i, s), scene_frame(i)))
+        << model() << ", frame " << i << " after the refused one";
+}
+
 TEST_P(ModelContract, AnObjectThatLeavesIsLost) {
   Tracker t;
   const Settings s = settings_for(kind());
@@ -195,8 +217,7 @@ TEST_P(ModelContract, AnObjectThatLeavesIsLost) {
   SceneFrame gone = scene_frame(0);
   gone.i420 = scene_frame(200).i420;  // far right, out of the frame
   int tracking = 0;
-  for (int i = 6; i < 16; ++i)
-    tracking += has_features(t.track(gone.colour(), i, s).status);
+  for (int i = 6; i < 16; ++i) tracking += has_features(t.track(gone.colour(), i, s).status);
   EXPECT_LE(tracking, 1) << model() << ": the background reported as the object";
 }
 
@@ -214,8 +235,8 @@ TEST_P(ModelContract, AnExhaustedBudgetEndsEveryFrameWithinItsBound) {
       EXPECT_LE(r.work, r.work_limit + overshoot_bound(1920, 1080))
           << model() << " from a " << name_of(k) << ", frame " << i;
       EXPECT_EQ(r.status, TrackStatus::OverBudget)
-          << model() << " from a " << name_of(k) << ", frame " << i << ": "
-          << status_name(r.status) << " after " << r.work << " work units";
+          << model() << " from a " << name_of(k) << ", frame " << i << ": " << status_name(r.status)
+          << " after " << r.work << " work units";
     }
   }
 }

@@ -68,7 +68,9 @@ TEST(FlowSegmenter, FollowsAnObjectOfSeveralColoursAcrossAPanningBackground) {
   double worst = 1;
   for (int t = 1; t <= 30; ++t) {
     scene.render(t, bgr, truth);
-    ASSERT_TRUE(segmenter.follow(images_of(bgr), p)) << "frame " << t;
+    const WorkImages img = images_of(bgr);
+    ASSERT_TRUE(segmenter.follow(img, p)) << "frame " << t;
+    segmenter.accept(img, p);  // the tracker's verdict, as every estimate were accepted
     worst = std::min(worst, iou(segmenter.silhouette(), truth));
   }
   // Kept on every frame (the first silhouette held still overlaps nothing by the last one), with
@@ -97,7 +99,9 @@ double last_overlap(const FlowModelParams& p, int last, FrameAt frame_at) {
       segmenter.start(img, truth, img, truth, p, false, false);
       continue;
     }
-    if (!segmenter.follow(images_of(bgr), p)) return 0;
+    const WorkImages img = images_of(bgr);
+    if (!segmenter.follow(img, p)) return 0;
+    segmenter.accept(img, p);
     overlap = iou(segmenter.silhouette(), truth);
   }
   return overlap;

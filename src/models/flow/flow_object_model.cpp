@@ -112,6 +112,8 @@ Observation FlowObjectModel::follow(FrameEvidence& ev, const Track& track) {
   if (!segmenter_.follow(*img, ev.tp.flow))
     return Observation::missing(
         "nothing of the object is left where the picture's motion carried it");
+  followed_ = img;
+  followed_params_ = &ev.tp.flow;
   return observed(false);
 }
 
@@ -154,6 +156,15 @@ Veto FlowObjectModel::veto(FrameEvidence&, const Features&, const Track&) {
 }
 
 void FlowObjectModel::settle(Verdict verdict) {
+  // A followed frame is learned from and carried on only when its estimate was accepted.
+  if (followed_) {
+    if (verdict == Verdict::Accepted)
+      segmenter_.accept(*followed_, *followed_params_);
+    else
+      segmenter_.refuse();
+    followed_ = nullptr;
+    followed_params_ = nullptr;
+  }
   // A start not taken leaves nothing to follow.
   if (starting_ && verdict != Verdict::Accepted) segmenter_.forget(false);
   if (starting_ && verdict == Verdict::Accepted) {
@@ -200,6 +211,8 @@ bool FlowObjectModel::relearn() {
 void FlowObjectModel::forget(Forget what) {
   // A track dropped keeps the object's colours to find it again (Forget::Position).
   segmenter_.forget(what == Forget::Everything);
+  followed_ = nullptr;
+  followed_params_ = nullptr;
   moving_.reset();
   last_searched_.release();
   searched_ = 0;

@@ -73,6 +73,9 @@ class FlowObjectModel final : public ObjectModel {
   Observation observed(bool resumed);
 
   FlowSegmenter segmenter_;
+  // This frame's images and settings while its follow() awaits the verdict (settle()).
+  const WorkImages* followed_ = nullptr;
+  const FlowModelParams* followed_params_ = nullptr;
   CutWorkspace cut_work_;      // the box's and the point's cuts (kept: their buffers are reused)
   MovingObjectFinder moving_;  // the moving object, when nobody points at one
   int searched_ = 0;           // frames searched since the object was lost (or forgotten)
