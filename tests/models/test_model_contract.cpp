@@ -98,6 +98,16 @@ void start(Tracker& t, StartKind k, const SceneFrame& f) {
   }
 }
 
+// Starts `t` from the object's box on frame 0 and follows it on frames 0 .. frames - 1.
+::testing::AssertionResult follows_from_box(Tracker& t, const Settings& s, int frames) {
+  t.seed_box(scene_frame(0).box);
+  for (int i = 0; i < frames; ++i) {
+    const SceneFrame f = scene_frame(i);
+    if (auto on = on_object(t.track(f.colour(), i, s), f); !on) return on << " (frame " << i << ")";
+  }
+  return ::testing::AssertionSuccess();
+}
+
 class ModelContract : public ::testing::TestWithParam<ObjectModelKind> {
  protected:
   ObjectModelKind kind() const { return GetParam(); }
@@ -137,9 +147,7 @@ TEST_P(ModelContract, WithNoStartWhatMovesIsFoundAndManualWaits) {
 TEST_P(ModelContract, AResizeKeepsTheTrack) {
   Tracker t;
   const Settings s = settings_for(kind());
-  start(t, StartKind::Box, scene_frame(0));
-  for (int i = 0; i < 8; ++i)
-    ASSERT_TRUE(on_object(t.track(scene_frame(i).colour(), i, s), scene_frame(i)));
+  ASSERT_TRUE(follows_from_box(t, s, 8)) << model();
   t.rescale(320, 240, 480, 360);
   int on = 0;
   for (int i = 8; i < 16; ++i) {
@@ -154,9 +162,7 @@ TEST_P(ModelContract, AResizeKeepsTheTrack) {
 TEST_P(ModelContract, AFormatChangeKeepsTheTrack) {
   Tracker t;
   const Settings s = settings_for(kind());
-  start(t, StartKind::Box, scene_frame(0));
-  for (int i = 0; i < 8; ++i)
-    ASSERT_TRUE(on_object(t.track(scene_frame(i).colour(), i, s), scene_frame(i)));
+  ASSERT_TRUE(follows_from_box(t, s, 8)) << model();
   t.relearn();  // the frames are now gray
   int on = 0;
   for (int i = 8; i < 16; ++i) {
@@ -172,9 +178,7 @@ TEST_P(ModelContract, ABlankFrameIsNotTheObject) {
   for (int level : {0, 128, 255}) {
     Tracker t;
     const Settings s = settings_for(kind());
-    start(t, StartKind::Box, scene_frame(0));
-    for (int i = 0; i < 6; ++i)
-      ASSERT_TRUE(on_object(t.track(scene_frame(i).colour(), i, s), scene_frame(i)));
+    ASSERT_TRUE(follows_from_box(t, s, 6)) << model();
     for (int i = 6; i < 16; ++i) {
       const TrackResult r = t.track(scene_frame(i, 320, 240, level).colour(), i, s);
       EXPECT_FALSE(has_features(r.status))
@@ -189,9 +193,7 @@ TEST_P(ModelContract, ARefusedFrameTeachesNothing) {
   // the silhouette held is the last accepted one (not the swollen cut), and the track goes on.
   Tracker t;
   const Settings s = settings_for(kind());
-  start(t, StartKind::Box, scene_frame(0));
-  for (int i = 0; i < 6; ++i)
-    ASSERT_TRUE(on_object(t.track(scene_frame(i).colour(), i, s), scene_frame(i)));
+  ASSERT_TRUE(follows_from_box(t, s, 6)) << model();
   const TrackResult swollen = t.track(scene_frame(6, 320, 240, -1, 1.8).colour(), 6, s);
   ASSERT_EQ(swollen.status, TrackStatus::Lost) << model() << ": " << swollen.detail;
   std::vector<std::uint8_t> mask(320 * 240);
@@ -209,9 +211,7 @@ TEST_P(ModelContract, ARefusedFrameTeachesNothing) {
 TEST_P(ModelContract, AnObjectThatLeavesIsLost) {
   Tracker t;
   const Settings s = settings_for(kind());
-  start(t, StartKind::Box, scene_frame(0));
-  for (int i = 0; i < 6; ++i)
-    ASSERT_TRUE(on_object(t.track(scene_frame(i).colour(), i, s), scene_frame(i)));
+  ASSERT_TRUE(follows_from_box(t, s, 6)) << model();
   // The object is gone: the background alone.
   cv::Mat bgr(240, 320, CV_8UC3), i420;
   SceneFrame gone = scene_frame(0);
