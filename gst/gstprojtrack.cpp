@@ -2,17 +2,17 @@
  * SECTION:element-projtrack
  * @title: projtrack
  *
- * Tracks one object in video from its edges and one point inside it (the *inner point*), with the
- * estimators of Quesada & León, "Filling-Based Techniques Applied to Object Projection Feature
- * Estimation", or with ours beyond the paper, gap-tolerant filling (the default method): on every
- * buffer it reports the object's centroid, area (px²) and bounding box.
+ * Tracks one object in video from a point inside it (the *inner point*), a box around it or by
+ * itself, with the estimators of Quesada & León, "Filling-Based Techniques Applied to Object
+ * Projection Feature Estimation", or with ours beyond the paper, gap-tolerant filling (the
+ * default method): on every buffer it reports the object's centroid, area (px²) and bounding box.
  *
- * With `object-model=appearance` (the default) it finds the whole object's silhouette on every
- * frame — from the object's colours against its surroundings' (chroma is read from the frame's
- * own planes), its edges and its last silhouette — so that a real held object is tracked through
- * its prints and highlights, without the hand that holds it, and the estimator runs on that
- * silhouette's outline. `object-model=edges` is the paper's tracker alone: the estimator on the
- * edge image from the inner point.
+ * With `object-model=flow` (the default) it follows the whole object: its last silhouette is
+ * carried along the picture's dense motion and cut from its surroundings by the colours (chroma
+ * read from the frame's own planes) and the motion of both, so that a real object is tracked
+ * through its prints, highlights and turns, and the estimator runs on that silhouette's outline.
+ * `object-model=edges` is the paper's tracker alone: the estimator on the edge image from the
+ * inner point.
  *
  * While tracking, every buffer carries a #GstVideoRegionOfInterestMeta of type `object` (the
  * bounding box; its id is the track's `track-id`, new on every acquisition) with a `projtrack`
@@ -45,8 +45,9 @@
  * or box given; GAP buffers pass untouched. Numeric settings may be driven by a #GstController.
  *
  * No frame can stall the pipeline: each has a budget of work (`max-work`, in passes over its
- * pixels, counted in work and never in time) that edge detection and every estimate spend from; a
- * frame that runs out ends with `status=over-budget` and counts as a refused one. A state change
+ * pixels, counted in work and never in time) that every stage spends from — the flow model's
+ * before each of its stages runs, edge detection and every estimate as they go; a frame that runs
+ * out ends with `status=over-budget` and counts as a refused one. A state change
  * to READY or NULL, or a flush, stops a frame in progress (`status=interrupted`), so
  * gst_element_set_state() never waits for a long frame.
  *
@@ -63,8 +64,8 @@
  * |[
  * gst-launch-1.0 -m v4l2src ! videoconvert ! projtrack draw=true updates=on-change ! videoconvert !
  * autovideosink
- * ]| Wave an evenly coloured object: it is found, tracked and, when lost, found again; clicking
- * on an object tracks that one. The overlay says what is tracked, or why not; a message is
+ * ]| Move an object in view: it is found, tracked and, when lost, found again by its colours;
+ * clicking on an object tracks that one. The overlay says what is tracked, or why not; a message is
  * posted only when that changes.
  * |[
  * gst-launch-1.0 filesrc location=clip.mp4 ! decodebin ! videoconvert ! projtrack

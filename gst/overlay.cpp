@@ -45,7 +45,7 @@ void draw_overlay(GstVideoFrame* frame, Method method, const TrackResult& result
   Painter paint(frame);
   const Features& features = result.features;
   if (flags & kDrawGrid) draw_trace(paint, method, trace);
-  // The silhouette the estimator ran on (appearance model), as thick as the text's strokes.
+  // The silhouette the estimator ran on (the flow model's), as thick as the text's strokes.
   const int scale = text_scale(paint.height());
   if (flags & kDrawOutline)
     for (const Point2i& p : trace.outline)

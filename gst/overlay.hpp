@@ -15,7 +15,7 @@ namespace projtrack::gst {
 
 // Of what `flags` (DrawFlag bits) asks for: filled pixels (tinted cyan), grid lines (magenta),
 // selected blocks (tinted blue, outlined), the last recorded iteration's rays (green) and their
-// hits (yellow); the object's outline (green, the appearance model); the bounding box (red while
+// hits (yellow); the object's outline (green, the flow model's); the bounding box (red while
 // tracking, orange when held after a loss); the centroid (red cross); the updated inner point
 // (yellow square); the text panel. Works on every supported format: each colour is written
 // component by component through the format's plane, offset and subsampling.

@@ -22,7 +22,7 @@ struct FrameReport {
   const char* element;  // the element's name
   int track_id;         // of the track the features belong to; 0: none
   int width, height;    // the frame's
-  // The silhouette's outline on this frame (tracking with the appearance model), frame
+  // The silhouette's outline on this frame (tracking with the flow model), frame
   // coordinates, one polygon per piece.
   const std::vector<std::vector<Point2i>>& outline;
   std::string note;  // said in the message's detail besides the tracker's (a refused seed)

@@ -10,7 +10,7 @@ using namespace projtrack::python;
 
 PYBIND11_MODULE(projtrack, m) {
   m.doc() =
-      "projtrack: track an object in video from its edges and one inner point, on numpy frames.\n\n"
+      "projtrack: track one object in video from a point, box or mask of it, on numpy frames.\n\n"
       "    tracker = projtrack.Tracker()\n"
       "    tracker.init(frame, (x, y, w, h))      # or a point (x, y) inside the object\n"
       "    ok, box = tracker.update(next_frame)   # as OpenCV's trackers\n"

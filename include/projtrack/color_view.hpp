@@ -30,17 +30,18 @@ struct ChromaView {
 };
 
 // The one range of the values the tracker reads: video range (BT.601's studio swing: luma
-// 16–235, chroma 16–240 about 128), what cameras and decoders give as YUV. The appearance model's
-// colour bins and thresholds are measured there, so every frame is read at it: the element and
-// Python convert RGB to it and map a full-range frame (GRAY8, JPEG's YUV, OpenCV's gray) down to
-// it (color_conversion.hpp), and every pixel format of one picture gives the same colours.
+// 16–235, chroma 16–240 about 128), what cameras and decoders give as YUV. Every frame is read at
+// it, so that every pixel format of one picture gives the same colours: the element and Python
+// convert RGB to it and map a full-range frame (GRAY8, JPEG's YUV, OpenCV's gray) down to it
+// (color_conversion.hpp).
 inline constexpr int kVideoBlack = 16;  // video range's black luma (and an edge map's "no edge")
 
 // A frame's colours at video range (above).
 struct ColorView {
   ImageView luma;
   ChromaView chroma;  // empty for gray frames: only luma tells colours apart
-  // How the appearance model's work frames read these colours (the identity but in dim light).
+  // How these colours are to be read in dim light (exposure.hpp): carried with the frame, but no
+  // stage applies it since the appearance model, which did, was removed.
   Exposure exposure;
 
   bool has_chroma() const { return !chroma.empty(); }

@@ -1,6 +1,8 @@
-// How brightly a frame is exposed, and how the appearance model reads a dim one: a camera in dim
-// light squeezes every colour toward black and neutral, so that colours it told apart in good
-// light fall into the same colour bins (a dark cup and the shadowed hand that holds it).
+// How brightly a frame is exposed (luma_range: the motion detector reads a frame's spread), and
+// how a dim one could be read: a camera in dim light squeezes every colour toward black and
+// neutral, so that colours it told apart in good light fall into the same colour bins (a dark
+// cup and the shadowed hand that holds it). exposure_for() was the appearance model's reading of
+// a dim frame; since that model was removed no stage applies it.
 #pragma once
 
 #include <array>

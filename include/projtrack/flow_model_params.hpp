@@ -40,7 +40,7 @@ struct FlowModelParams {
   // first frame's colours in the evidence (they anchor it against drift).
   double learning_rate = 0.05;
   double first_share = 0.5;
-  // When the first silhouette is outlined (a mask, or GrabCut within a box), the colours near
+  // When the first silhouette is outlined (a mask, or the cut within a box), the colours near
   // each part of the object count too (segmentation/local_colours): its box cut into
   // `local_colour_cells` × as many cells, each with its own object and surroundings colours, at
   // this weight beside the frame-wide ones. 0: none. A start from a point does not learn them.

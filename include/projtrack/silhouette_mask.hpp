@@ -1,5 +1,6 @@
-// The object's silhouette as the appearance model finds it, for its users: a mask at the model's
-// working scale, and its outline as polygons in frame coordinates.
+// The object's silhouette as the object model finds it (the flow model; the edges model has
+// none), for its users: a mask at the model's working scale, and its outline as polygons in
+// frame coordinates.
 #pragma once
 
 #include <vector>

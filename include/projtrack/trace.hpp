@@ -38,8 +38,8 @@ struct Trace {
   std::vector<Block> blocks;
   std::vector<Run> runs;  // pixel-filling: row runs; grid-filling: grid-line runs
   std::vector<Iteration> iterations;
-  // The object's silhouette outline, in frame coordinates, when the tracker found one (the
-  // appearance model); translate() leaves it alone.
+  // The object's silhouette outline, in frame coordinates, when the tracker found one (the flow
+  // model); translate() leaves it alone.
   std::vector<Point2i> outline;
 
   void add_ray(const Ray& r) {

@@ -16,7 +16,9 @@ namespace projtrack {
 enum class Acquisition {
   Manual,  // wait for an inner point (a property or a click)
   Center,  // try the frame centre
-  Auto,    // the most relevant object: see AutoAcquisition (edges) and ObjectFinder (appearance)
+  Auto,    // the most relevant object: see AutoAcquisition (edges); the flow model takes a lost
+           // object found again by its colours, else the object that moves apart from the
+           // picture's own motion (src/models/flow/flow_search.cpp)
 };
 
 // How Acquisition::Auto picks the object with the edges model (compared in docs/benchmarks.md).

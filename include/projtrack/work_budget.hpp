@@ -3,8 +3,9 @@
 //
 // The estimators count their work as they go (Work, rays.hpp) and poll the budget at coarse
 // checkpoints: per ray, per fill run, per grid line, per iteration; edge detection every 16 rows
-// of Canny and between filter passes; the tracker per seed and per piece of a silhouette. Never
-// per pixel.
+// of Canny and between filter passes; the tracker per seed and per piece of a silhouette; the
+// flow model before each of its stages (the work images, a frame's motion and cut, each stage of
+// a start's cut, the searches), which pay what they will do before they run. Never per pixel.
 #pragma once
 
 #include <algorithm>
