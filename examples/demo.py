@@ -136,7 +136,7 @@ def report(rows, title, video, table):
     if tracked:
         print(f'  centroid error mean {np.mean(errs):.2f} px, max {max(errs):.2f} px')
         print(f'  area error     mean {100 * np.mean(area):.1f} %, max {100 * max(area):.1f} %')
-    print(f'  time per frame median {ms[len(ms) // 2]:.2f} ms (edges + estimate + overlay)')
+    print(f'  time per frame median {ms[len(ms) // 2]:.2f} ms (the whole frame in the element: model, estimate, overlay)')
     print(f'  wrote {video} and {table}')
     return len(tracked)
 

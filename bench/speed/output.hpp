@@ -11,7 +11,7 @@ namespace projtrack::bench {
 
 // The element's own default method, read from its property by main().
 extern std::string kDefaultMethod;
-// The element with every property at its default (the appearance model): what users run.
+// The element with every property at its default (the flow model): what users run.
 extern const std::string kElementDefault;
 
 // speed.csv, open for the whole run (main() opens and closes it).

@@ -30,7 +30,7 @@ void compare_with_peers(Clip& clip, int rounds, int batch, bool have_cvtracker) 
   cs.emplace_back("harness alone (identity)",
                   [h = harnesses.back().get(), &clip](int i) { h->run(clip.i420[i]); });
   // Each method on the edges alone (object-model=edges: the estimator's own job, which is the
-  // stock-OpenCV peer's too), and the element as users run it (the appearance model).
+  // stock-OpenCV peer's too), and the element as users run it (the default flow model).
   for (const MethodInfo& m : kMethods) {
     harnesses.push_back(std::make_unique<Harness>(
         projtrack_launch(m.nick, clip) + " object-model=edges", caps_of("I420", clip)));

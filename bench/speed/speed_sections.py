@@ -67,7 +67,7 @@ def per_frame_section(rows, meta, methods, default):
               "centroid with `cv::moments` for the centroid. `cvtracker` (gst-plugins-bad) runs "
               "MOSSE from the object's true box on the first frame, on RGB frames converted "
               "beforehand. `projtrack element default` is the element as users run it (the "
-              "appearance model: the whole object's silhouette, the estimator on its outline); "
+              "flow model: the whole object's silhouette, the estimator on its outline); "
               "the `projtrack <method>` rows run each estimator on the edges alone "
               "(`object-model=edges`), the same job as the stock-OpenCV peer's.\n")
     for clip in ["generated", "real"]:

@@ -10,7 +10,7 @@ from speed_data import (BOUNDED_RES, COPY, ELEMENT, PEER_CV, PEER_MOSSE, T1_COPI
 def targets(rows, meta, default, methods):
     """The six targets: [(number, target, measured, verdict)]."""
     d = f"projtrack {default}"
-    # Targets 1 and 3: the element as users run it (the appearance model), and only it: without
+    # Targets 1 and 3: the element as users run it (the default flow model), and only it: without
     # its numbers they are not measured (the estimator alone is another job); target 2, the
     # estimator's own job on the edges, which is what Canny + floodFill does.
     t1 = value(rows, "ratio", "generated", "1920x1080", f"{ELEMENT} / {COPY}", "median")
@@ -18,7 +18,7 @@ def targets(rows, meta, default, methods):
     t3 = value(rows, "ratio", "generated", "640x480", f"{PEER_MOSSE} / {ELEMENT}", "median")
     share = value(rows, "clip", "generated", "1920x1080", "object", "share_of_frame")
     out = [
-        (1, f"the element with its defaults (the appearance model, {default}), 1920×1080 I420, "
+        (1, f"the element with its defaults (the flow model, {default}), 1920×1080 I420, "
             f"object {fmt_pct(share)} of the frame: ≤ {T1_COPIES}× a frame copy", fmt_x(t1),
          verdict([t1], t1 is not None and t1 <= T1_COPIES, words=TARGET)),
         (2, f"the estimator's own job ({default} on the edges, `object-model=edges`): "

@@ -1,4 +1,4 @@
-// The gate of automatic acquisition in both object models: it looks for a new object only on a
+// The gate of the edges model's automatic acquisition: it looks for a new object only on a
 // frame that moved, and says what it waits for otherwise.
 #pragma once
 

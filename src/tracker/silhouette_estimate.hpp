@@ -1,4 +1,4 @@
-// The estimator on the appearance model's silhouette: the paper's methods measure the object's
+// The estimator on the object model's silhouette: the paper's methods measure the object's
 // projection from its closed outline rather than from the frame's open edges.
 #pragma once
 

@@ -32,7 +32,7 @@ class HoldingTracker:
     takes_mask = True
 
     def __init__(self, **settings):
-        self.settings = dict(model=settings.get("model", "appearance"))
+        self.settings = dict(model=settings.get("model", "flow"))
 
     def init(self, frame, where):
         h, w = frame.shape[:2]
@@ -101,7 +101,7 @@ except ValueError:
 
 # --model reaches the constructor.
 assert runners.make_projtrack("edges").settings["model"] == "edges"
-assert runners.make_projtrack(None).settings["model"] == "appearance"
+assert runners.make_projtrack(None).settings["model"] == "flow"
 
 # The held first mask: the first mask on every frame, no call timed.
 gen = runners.runner("hold", "mask", frames, truth, 3)

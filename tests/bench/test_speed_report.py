@@ -222,7 +222,7 @@ assert '| edges pixel-filling | 0.50× | 2.25× | 3.00× | 0 | 0 |' in text
 text = render('undated', changed(t1=float('nan'), el_on=float('nan')), {})
 assert 'Measured at a time not recorded.' in text
 assert 'nan' not in text.lower(), 'a NaN in the report'
-assert f'| 1 | the element with its defaults (the appearance model, {DEFAULT})' in text
+assert f'| 1 | the element with its defaults (the flow model, {DEFAULT})' in text
 assert f'| {speed.MISSING} |' in text
 # The sentences on allocations and memory follow the data.
 text = render('allocating', changed(lib=2, rss_end=50000 + 4096), {})

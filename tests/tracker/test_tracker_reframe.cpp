@@ -13,7 +13,7 @@
 namespace projtrack {
 namespace {
 
-// A reddish disc on a grey-green wall, as I420 (the appearance model's colours).
+// A reddish disc on a grey-green wall, as I420 (colours the flow model tells from the wall).
 struct Picture {
   cv::Mat i420;
   int w, h;

@@ -125,6 +125,7 @@ TEST(TrackingSequences, GapsInTheEdgesAreRefusedNotReported) {
   };
   TrackerParams tp;
   tp.acquisition = Acquisition::Manual;
+  tp.model = ObjectModelKind::Edges;  // the model that reads the edges and their gaps
   const auto steps = run_sequence(60, spec, tp, Point2i{300, 270});
   int tracked = 0;
   for (const Step& s : steps) {
@@ -168,6 +169,7 @@ TEST(TrackingSequences, EdgesAroundTheObjectAloneChangeNothing) {
   for (Method m : kAllMethods) {
     TrackerParams around, whole;
     around.acquisition = whole.acquisition = Acquisition::Manual;
+    around.model = whole.model = ObjectModelKind::Edges;  // the model that reads edges by region
     whole.edge_margin = -1;
     Tracker a, b;
     a.seed({300, 240});
