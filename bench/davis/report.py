@@ -16,6 +16,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from report_kit import (DASH, MISSING, fmt_num, fmt_pct, fmt_res, frame_size,  # noqa: E402
                         missing, replace_between)
 
+import cost  # noqa: E402
 import dataset  # noqa: E402
 import figures  # noqa: E402
 import measures  # noqa: E402
@@ -218,6 +219,7 @@ def write_doc(res, doc_dir, path):
         if m == "j" and methods:
             lines += ["Starred columns: the published J (" + dataset.PUBLISHED_SOURCE + ").", ""]
         lines += per_sequence_table(res, m, published, methods if m == "j" else ()) + [""]
+    lines += cost.cost_section(res)
     lines += ["## Contact sheets", "",
               "Per sequence, projtrack's mask outlined in magenta and the truth in green, one row "
               "per start, on frame 1, N/2, N-2 and the frame of the lowest J of the first-mask "
