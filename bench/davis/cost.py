@@ -3,6 +3,8 @@ run, and its worst frame against its median frame, per sequence and start, with 
 verdicts computed from them (a run not measured is a miss, never a pass)."""
 import math
 
+from report_kit import DASH, TARGET, fmt_num, missing
+
 import results as R
 
 STARTS = [("projtrack", "mask"), ("projtrack", "box"), ("projtrack", "click")]
@@ -10,7 +12,6 @@ CSRT = ("CSRT", "box")
 # The targets: the mean frame (the start included) at most this share of CSRT's over the set, and
 # on every sequence; the worst frame at most this many times the median frame.
 MEAN_OF_CSRT, SEQUENCE_OF_CSRT, WORST_OVER_MEDIAN = 0.10, 0.15, 3.0
-DASH_ROW = "–"
 
 
 def timed(res, seq, key):
@@ -22,39 +23,30 @@ def timed(res, seq, key):
     return ([float(init)] if init != "" else []) + frames
 
 
-def median(values):
-    v = sorted(values)
-    n = len(v)
-    return math.nan if n == 0 else (v[n // 2] if n % 2 else (v[n // 2 - 1] + v[n // 2]) / 2)
-
-
 def ratio(a, b):
-    return a / b if a and b and not math.isnan(a) and not math.isnan(b) else math.nan
+    return a / b if not missing(a, b) and a and b else math.nan
 
 
-def of_csrt(res, seq, key):
-    ours, theirs = timed(res, seq, key), timed(res, seq, CSRT)
+def of_csrt(res, seqs, key):
+    """The mean call of `key` over CSRT's, over every call of the sequences `seqs`."""
+    ours = [v for s in seqs for v in timed(res, s, key)]
+    theirs = [v for s in seqs for v in timed(res, s, CSRT)]
     return ratio(R.mean(ours), R.mean(theirs)) if ours and theirs else math.nan
 
 
 def worst_over_median(res, seq, key):
     t = timed(res, seq, key)
-    return ratio(max(t), median(t)) if t else math.nan
+    return ratio(max(t), R.median(t)) if t else math.nan
 
 
-def overall_of_csrt(res, key):
-    ours = [v for s in res.sequences for v in timed(res, s, key)]
-    theirs = [v for s in res.sequences for v in timed(res, s, CSRT)]
-    return ratio(R.mean(ours), R.mean(theirs)) if ours and theirs else math.nan
-
-
-def fmt(x, digits=2):
-    return "not measured" if math.isnan(x) else f"{x:.{digits}f}"
+def most(values):
+    return max(values) if values and not missing(*values) else math.nan
 
 
 def verdict(values, limit):
-    return "**met**" if values and all(not math.isnan(v) and v <= limit for v in values) \
-        else "**not met**"
+    """met only when every value was measured and is within `limit`."""
+    met = values and not missing(*values) and all(v <= limit for v in values)
+    return TARGET.holds if met else TARGET.fails
 
 
 def cost_section(res):
@@ -67,23 +59,20 @@ def cost_section(res):
                                                                   for k in keys]
     lines += ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for s in res.sequences:
-        cells = [fmt(of_csrt(res, s, k)) for k in keys]
-        cells += [fmt(worst_over_median(res, s, k), 1) for k in keys]
+        cells = [fmt_num(of_csrt(res, [s], k), 2) for k in keys]
+        cells += [fmt_num(worst_over_median(res, s, k), 1) for k in keys]
         lines.append(f"| {s} | " + " | ".join(cells) + " |")
-    cells = [fmt(overall_of_csrt(res, k)) for k in keys] + [DASH_ROW for _ in keys]
+    cells = [fmt_num(of_csrt(res, res.sequences, k), 2) for k in keys] + [DASH for _ in keys]
     lines.append("| **all frames** | " + " | ".join(f"**{c}**" for c in cells) + " |")
-    overall = [overall_of_csrt(res, k) for k in keys]
-    per_seq = [of_csrt(res, s, k) for s in res.sequences for k in keys]
+    overall = [of_csrt(res, res.sequences, k) for k in keys]
+    per_seq = [of_csrt(res, [s], k) for s in res.sequences for k in keys]
     worst = [worst_over_median(res, s, k) for s in res.sequences for k in keys]
     lines += ["", "| target | measured | verdict |", "|---|---|---|",
               f"| the mean call, start counted, ≤ {MEAN_OF_CSRT} of CSRT's over the set, from "
-              f"every start | {', '.join(f'{k[1]} {fmt(v)}' for k, v in zip(keys, overall))} | "
-              f"{verdict(overall, MEAN_OF_CSRT)} |",
+              f"every start | {', '.join(f'{k[1]} {fmt_num(v, 2)}' for k, v in zip(keys, overall))}"
+              f" | {verdict(overall, MEAN_OF_CSRT)} |",
               f"| ≤ {SEQUENCE_OF_CSRT} of CSRT's on every sequence and start | the most "
-              f"{fmt(max(per_seq) if per_seq and not any(map(math.isnan, per_seq)) else math.nan)}"
-              f" | {verdict(per_seq, SEQUENCE_OF_CSRT)} |",
+              f"{fmt_num(most(per_seq), 2)} | {verdict(per_seq, SEQUENCE_OF_CSRT)} |",
               f"| the worst call ≤ {WORST_OVER_MEDIAN:g}× the median on every sequence and start "
-              f"| the most {fmt(max(worst) if worst and not any(map(math.isnan, worst)) else math.nan, 1)}"
-              f" | {verdict(worst, WORST_OVER_MEDIAN)} |", ""]
+              f"| the most {fmt_num(most(worst), 1)} | {verdict(worst, WORST_OVER_MEDIAN)} |", ""]
     return lines
-

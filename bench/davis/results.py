@@ -34,6 +34,14 @@ def mean(values):
     return sum(values) / len(values) if values else NAN
 
 
+def median(values):
+    values = sorted(values)
+    n = len(values)
+    if not n:
+        return NAN
+    return values[n // 2] if n % 2 else (values[n // 2 - 1] + values[n // 2]) / 2
+
+
 class Results:
     def __init__(self, data_dir):
         self.dir = data_dir
@@ -90,11 +98,7 @@ class Results:
         """The median ms over every timed frame of every sequence; NaN as overall()."""
         if not all(self.measured(s, key) for s in self.sequences):
             return NAN
-        values = sorted(v for s in self.sequences for v in self.per_frame(s, key, "ms").values())
-        if not values:
-            return NAN
-        mid = len(values) // 2
-        return values[mid] if len(values) % 2 else (values[mid - 1] + values[mid]) / 2
+        return median(v for s in self.sequences for v in self.per_frame(s, key, "ms").values())
 
     def scored_frames(self):
         return sum(len(self.per_frame(s, ("hold", "mask"), "j")) for s in self.sequences)

@@ -48,7 +48,9 @@ void colours_of(const cv::Mat& bgr, const cv::Mat& mask, Take take, Histogram& h
 }  // namespace
 
 bool trim_arm(const cv::Mat& bgr, cv::Point click, WorkBudget& budget, cv::Mat& mask) {
-  if (mask.empty() || bgr.size() != mask.size() || !reaches_border(mask)) return false;
+  if (mask.empty() || bgr.size() != mask.size() || !reaches_border(mask) ||
+      !cv::Rect(0, 0, mask.cols, mask.rows).contains(click))
+    return false;
   const std::uint64_t cost = kCostPerPixel * static_cast<std::uint64_t>(mask.total());
   if (budget.exhausted(cost)) return false;
   budget.spend(cost);
@@ -74,7 +76,6 @@ bool trim_arm(const cv::Mat& bgr, cv::Point click, WorkBudget& budget, cv::Mat& 
       if (m[x] && object[bin(p[x])] >= arm[bin(p[x])]) k[x] = 255;
   }
   cv::connectedComponents(kept, pieces, 8, CV_32S);
-  if (!cv::Rect(0, 0, w, h).contains(click)) return false;
   const int label = pieces.at<int>(click);
   if (label == 0) return false;
   kept = pieces == label;
