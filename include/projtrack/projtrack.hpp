@@ -9,6 +9,7 @@
 #include "geometry.hpp"
 #include "image_view.hpp"
 #include "method.hpp"
+#include "multi_tracker.hpp"
 #include "names.hpp"
 #include "params.hpp"
 #include "pose.hpp"

@@ -49,6 +49,10 @@ enum class TrackStatus {
   // The work was stopped (Tracker::set_stop_flag: the pipeline is stopping or flushing): the
   // track is kept as it was, untouched.
   Interrupted,
+  // Another object followed by the same MultiTracker is in front of this one: its last accepted
+  // features are kept (none of the other's pixels are given to it), and the frame does not count
+  // towards dropping the track; it is found again when it comes out.
+  Occluded,
 };
 
 // Short lower-case name, as in GStreamer messages and CSV files ("ok", "reached-border", ...). The
@@ -58,7 +62,7 @@ std::string_view status_name(EstimateStatus s);
 std::string_view status_name(TrackStatus s);
 // The last value of each, for loops over every status.
 inline constexpr EstimateStatus kLastEstimateStatus = EstimateStatus::Interrupted;
-inline constexpr TrackStatus kLastTrackStatus = TrackStatus::Interrupted;
+inline constexpr TrackStatus kLastTrackStatus = TrackStatus::Occluded;
 
 // Whether the result carries a centroid, an area and a bounding box of this frame.
 inline bool has_features(EstimateStatus s) {

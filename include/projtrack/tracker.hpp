@@ -41,6 +41,8 @@ namespace projtrack {
 // What the tracker made of one frame: everything its users (the element's meta, message and
 // overlay) report.
 struct TrackResult {
+  // The object's id in a MultiTracker (from 1, never reused within a stream); 0 from a Tracker.
+  int id = 0;
   TrackStatus status = TrackStatus::NoInnerPoint;
   Features features;   // this frame's estimate; when Lost, the last accepted one (if any)
   std::string detail;  // why, when the status is Lost, Searching or without features

@@ -49,6 +49,8 @@ std::string_view status_name(TrackStatus s) {
       return "invalid-parameters";
     case TrackStatus::OverBudget:
       return "over-budget";
+    case TrackStatus::Occluded:
+      return "occluded";
     case TrackStatus::Interrupted:
       return "interrupted";
   }

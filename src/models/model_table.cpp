@@ -8,6 +8,10 @@ Veto ObjectModel::veto(FrameEvidence&, const Features&, const Track&) { return {
 
 SilhouetteMask ObjectModel::silhouette(int, int) const { return {}; }
 
+double ObjectModel::explains(const FramePixels&) const { return -HUGE_VAL; }
+
+Observation ObjectModel::give_up(const FramePixels&, const Observation& o) { return o; }
+
 std::unique_ptr<ObjectModel> make_object_model(ObjectModelKind kind) {
   switch (kind) {
 #define PROJTRACK_OBJECT_MODEL(id, value, nick, description) \

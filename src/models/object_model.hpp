@@ -13,6 +13,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "core/frame_pixels.hpp"
 #include "core/mask.hpp"
 #include "core/track.hpp"
 #include "models/frame_evidence.hpp"
@@ -123,8 +124,18 @@ class ObjectModel {
   virtual bool relearn() = 0;
   // The track was dropped or reset.
   virtual void forget(Forget what) = 0;
-  // The object's silhouette after the last frame (empty when the model holds none).
+  // The object's silhouette after the last frame (empty when the model holds none); between an
+  // observation and its verdict, the observation's.
   virtual SilhouetteMask silhouette(int frame_width, int frame_height) const;
+
+  // Where this frame's observation meets another object's (a MultiTracker), between the
+  // observation and its verdict. explains: how well the model's own evidence of this frame (what
+  // it sees of the object there, not where it expected it) takes `pixels` for its object, a mean
+  // log-odds; -infinity when it has no such evidence (a start, or no silhouette: the default).
+  // give_up: the observation `o` without `pixels`, which the object in front owns (missing when
+  // nothing is left); the default has no silhouette to give up and returns `o`.
+  virtual double explains(const FramePixels& pixels) const;
+  virtual Observation give_up(const FramePixels& pixels, const Observation& o);
 };
 
 // The model of `kind`, made from the table's row (src/models/model_table.cpp).

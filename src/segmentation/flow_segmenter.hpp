@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "core/frame_pixels.hpp"
 #include "motion/dense_flow.hpp"
 #include "motion/motion_evidence.hpp"
 #include "projtrack/flow_model_params.hpp"
@@ -51,6 +52,12 @@ class FlowSegmenter {
   // The cut is not the object: the silhouette is the last accepted one carried along this
   // frame's motion (empty, not tracking, when nothing of it is left), and nothing is learned.
   void refuse();
+  // Where this frame's cut (between follow() and accept() or refuse()) meets another object's:
+  // the mean evidence beside the prior (colours and motion) over the work pixels whose centres
+  // lie in `pixels` (-infinity when none does), and the cut without them (false when nothing is
+  // left: refuse() then brings back the last accepted silhouette carried along).
+  double evidence_over(const FramePixels& pixels) const;
+  bool give_up(const FramePixels& pixels);
   // This frame's silhouette, 255 on the object (CV_8U, work size); empty when there is none.
   const cv::Mat& silhouette() const { return mask_; }
   // The silhouette's bounding box (work px): silhouette() is zero outside it.

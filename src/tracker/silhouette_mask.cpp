@@ -36,7 +36,7 @@ bool draw(const SilhouetteMask& s, std::uint8_t* mask, std::ptrdiff_t stride) {
 bool Tracker::silhouette(std::uint8_t* mask, int width, int height, std::ptrdiff_t stride) const {
   if (mask == nullptr || width <= 0 || height <= 0 || stride < width) return false;
   for (int y = 0; y < height; ++y) std::memset(mask + y * stride, 0, width);
-  SilhouetteMask s = impl_->model->silhouette(width, height);
+  SilhouetteMask s = impl_->object.model->silhouette(width, height);
   s.frame_width = width;  // the caller's mask bounds what is drawn
   s.frame_height = height;
   return draw(s, mask, stride);

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "core/plausibility.hpp"
+#include "tracker/object_track.hpp"
 #include "tracker/refusal_policy.hpp"
-#include "tracker/tracker_impl.hpp"
 
 namespace projtrack {
 
@@ -29,7 +29,7 @@ Origin origin_of(const Track& t) {
 
 }  // namespace
 
-StartRequest Tracker::Impl::start_request() const {
+StartRequest ObjectTrack::start_request() const {
   const Track& t = state.track();
   StartRequest r;
   if (!t.inner) return r;
@@ -49,15 +49,14 @@ StartRequest Tracker::Impl::start_request() const {
   return r;
 }
 
-Features Tracker::Impl::estimate(FrameEvidence& ev, const Observation& o) {
+Features ObjectTrack::estimate(FrameEvidence& ev, const Observation& o) {
   if (o.kind != Observation::Kind::Silhouette) return o.estimate;
   const SilhouetteView s{*o.silhouette, o.scale, ev.width(), ev.height()};
   return estimate_on_silhouette(s, state.track().inner, ev.estimator, ev.method, ev.params,
-                                ev.budget, work.on_silhouette, ev.trace);
+                                ev.budget, on_silhouette_, ev.trace);
 }
 
-Veto Tracker::Impl::judge(FrameEvidence& ev, const Features& f, const Observation& o,
-                          bool starting) {
+Veto ObjectTrack::judge(FrameEvidence& ev, const Features& f, const Observation& o, bool starting) {
   const Track& t = state.track();
   const int w = ev.width(), h = ev.height();
   const Origin origin = origin_of(t);
@@ -81,32 +80,46 @@ Veto Tracker::Impl::judge(FrameEvidence& ev, const Features& f, const Observatio
   return v;
 }
 
-TrackResult Tracker::Impl::step(FrameEvidence& ev, const FrameInput& in) {
+TrackResult ObjectTrack::step(FrameEvidence& ev, const FrameInput& in) {
+  const Look l = look(ev, in);
+  return l.done ? *l.done : conclude(ev, in, l);
+}
+
+Look ObjectTrack::look(FrameEvidence& ev, const FrameInput& in) {
+  Look l;
+  l.starting = !model->tracking();
+  if (l.starting && waits_for_user(state.track(), in.tp)) {
+    l.done = not_started(kNoInnerPoint, false, in.tp, TrackStatus::NoInnerPoint);
+    return l;
+  }
+  l.seeded = state.track().inner.has_value();
+  l.observation = l.starting ? model->start(ev, start_request(), state.track())
+                             : model->follow(ev, state.track());
+  return l;
+}
+
+TrackResult ObjectTrack::conclude(FrameEvidence& ev, const FrameInput& in, const Look& l) {
   const TrackerParams& tp = in.tp;
   const int w = ev.width(), h = ev.height();
-  const bool starting = !model->tracking();
-  if (starting && waits_for_user(state.track(), tp))
-    return not_started(kNoInnerPoint, false, tp, TrackStatus::NoInnerPoint);
-  const bool seeded = state.track().inner.has_value();
-  const Observation o = starting ? model->start(ev, start_request(), state.track())
-                                 : model->follow(ev, state.track());
+  const Observation& o = l.observation;
+  const bool work_stopped = ev.budget.ran_out() || ev.budget.interrupted();
   TrackResult r;
   if (o.kind == Observation::Kind::Stopped ||
-      (o.kind == Observation::Kind::Missing && work_stopped())) {
+      (o.kind == Observation::Kind::Missing && work_stopped)) {
     model->settle(Verdict::Stopped);
-    stopped(o.estimate, tp, r);
+    stopped(o.estimate, ev.budget, tp, r);
     return r;
   }
   if (o.kind == Observation::Kind::Missing) {
     model->settle(Verdict::Refused);
-    if (starting) return not_started(o.why, seeded, tp);
+    if (l.starting) return not_started(o.why, l.seeded, tp);
     refuse(o.why, tp, r);
     return r;
   }
   const Features f = estimate(ev, o);
   if (stops(f)) {
     model->settle(Verdict::Stopped);
-    stopped(f, tp, r);
+    stopped(f, ev.budget, tp, r);
     return r;
   }
   if (unusable(f)) {  // the track is kept as it is
@@ -115,14 +128,14 @@ TrackResult Tracker::Impl::step(FrameEvidence& ev, const FrameInput& in) {
     r.features = f;
     return r;
   }
-  const Veto v = judge(ev, f, o, starting);
+  const Veto v = judge(ev, f, o, l.starting);
   if (v.why.empty()) {
     model->settle(Verdict::Accepted);
     accept(f, w, h, in, o.resumed, r);
     return r;
   }
   model->settle(Verdict::Refused);
-  if (starting && !v.drop) return not_started(v.why, seeded, tp);
+  if (l.starting && !v.drop) return not_started(v.why, l.seeded, tp);
   refuse(v.why, tp, r, TrackStatus::Lost, v.drop);
   return r;
 }

@@ -38,6 +38,9 @@ class TrackerState {
               const TrackerParams& tp);
   // One more refused frame: the last accepted estimate stays; a gesture in progress does not.
   void refuse();
+  // The object is hidden by another on this frame: the last accepted estimate stays, a gesture in
+  // progress does not, and the frame does not count towards dropping the track.
+  void hide() { pointer.refuse(); }
   // The frames are now sx × sy times as large, width × height: the track's points, boxes and
   // areas follow (the boxes within the frame).
   void rescale(double sx, double sy, int width, int height);

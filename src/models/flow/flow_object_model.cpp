@@ -228,4 +228,16 @@ SilhouetteMask FlowObjectModel::silhouette(int frame_width, int frame_height) co
           Rect{b.x, b.y, b.width, b.height}, segmenter_.scale(), frame_width, frame_height};
 }
 
+double FlowObjectModel::explains(const FramePixels& pixels) const {
+  // Only a followed frame weighed its own evidence (a start has none of this frame's).
+  return followed_ ? segmenter_.evidence_over(pixels) : -HUGE_VAL;
+}
+
+Observation FlowObjectModel::give_up(const FramePixels& pixels, const Observation& o) {
+  if (!segmenter_.give_up(pixels)) return Observation::missing("hidden by another object");
+  Observation left = observed(o.resumed);
+  left.area_limit = o.area_limit;
+  return left;
+}
+
 }  // namespace projtrack

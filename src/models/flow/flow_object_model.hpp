@@ -35,6 +35,8 @@ class FlowObjectModel final : public ObjectModel {
   bool relearn() override;
   void forget(Forget what) override;
   SilhouetteMask silhouette(int frame_width, int frame_height) const override;
+  double explains(const FramePixels& pixels) const override;
+  Observation give_up(const FramePixels& pixels, const Observation& o) override;
 
  private:
   // The first silhouette, into inside_ (the work images' size): the user's mask, the object cut

@@ -1,0 +1,143 @@
+// One frame of a MultiTracker: the checks every object shares, each object's look at the frame's
+// one evidence within its share of the frame's budget, the pixels two objects claim given to the
+// one in front, and each object's verdict.
+#include <algorithm>
+#include <numeric>
+#include <utility>
+
+#include "tracker/multi_tracker_impl.hpp"
+#include "tracker/overlaps.hpp"
+
+namespace projtrack {
+
+namespace {
+
+// An object's share of what is left of the frame's `limit` after `spent`, among `objects` left.
+std::uint64_t share_of(std::uint64_t limit, std::uint64_t spent, std::size_t objects) {
+  if (limit == WorkBudget::kUnlimited) return limit;
+  return (limit - std::min(spent, limit)) / std::max<std::size_t>(objects, 1);
+}
+
+}  // namespace
+
+std::vector<std::size_t> MultiTracker::Impl::look_order() const {
+  std::vector<std::size_t> order(objects.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_partition(order.begin(), order.end(),
+                        [&](std::size_t i) { return objects[i].track.model->tracking(); });
+  return order;
+}
+
+namespace {
+
+// Whether a look is a silhouette that can meet another's.
+bool has_silhouette(const Look& l) {
+  return !l.done && l.observation.kind == Observation::Kind::Silhouette;
+}
+
+}  // namespace
+
+std::vector<int> MultiTracker::Impl::settle_overlaps(std::vector<Look>& looks) {
+  const std::size_t n = objects.size();
+  std::vector<int> front_of(n, 0);
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      if (!has_silhouette(looks[a]) || !has_silhouette(looks[b])) continue;
+      ObjectModel& ma = *objects[a].track.model;
+      ObjectModel& mb = *objects[b].track.model;
+      const FramePixels both =
+          shared_pixels(ma.silhouette(width, height), mb.silhouette(width, height));
+      if (both.empty()) continue;
+      const bool a_in_front = ma.explains(both) >= mb.explains(both);
+      const std::size_t behind = a_in_front ? b : a;
+      ObjectModel& m = a_in_front ? mb : ma;
+      looks[behind].observation = m.give_up(both, looks[behind].observation);
+      front_of[behind] = objects[a_in_front ? a : b].id;
+    }
+  }
+  std::vector<int> hidden_by(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Track& t = objects[i].track.state.track();
+    if (!front_of[i] || looks[i].starting || !t.last) continue;
+    const double left = has_silhouette(looks[i])
+                            ? silhouette_area(objects[i].track.model->silhouette(width, height))
+                            : 0;
+    if (left < 0.5 * t.last->area) hidden_by[i] = front_of[i];
+  }
+  return hidden_by;
+}
+
+namespace {
+
+TrackResult failed(TrackStatus status, const std::string& why) {
+  TrackResult r;
+  r.status = status;
+  r.detail = why;
+  return r;
+}
+
+}  // namespace
+
+std::vector<TrackResult> MultiTracker::Impl::track(const ColorView& frame, EdgeSource& edges,
+                                                   const FrameInput& in) {
+  const std::uint64_t limit = frame_work_limit(frame.luma.width, frame.luma.height, in.tp);
+  work.budget = WorkBudget(limit, stop);
+  width = frame.luma.width;
+  height = frame.luma.height;
+  edges.set_budget(&work.budget);
+  if (in.trace) in.trace->clear();
+  const std::size_t n = objects.size();
+  std::vector<TrackResult> results(n);
+  TrackStatus status;
+  const std::string bad = frame_problem(frame, edges, in, work.budget, status);
+  std::vector<Look> looks(n);
+  std::vector<WorkBudget> shares(n, work.budget);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!bad.empty()) {
+      looks[i].done = failed(status, bad);
+    } else if (work.budget.interrupted()) {  // nothing is started while the stop flag is set
+      looks[i].done.emplace();
+      objects[i].track.stopped(Features{}, work.budget, in.tp, *looks[i].done);
+    }
+  }
+  if (bad.empty() && !work.budget.interrupted()) {
+    const ObjectModelKind kind = model_for(edges, in.tp);
+    for (Object& o : objects) o.track.use_model(kind);
+    FrameEvidence ev(frame, edges, work.budget, work.estimator(in.method), in.method, in.params,
+                     in.tp, in.trace, work.images);
+    const std::vector<std::size_t> order = look_order();
+    std::uint64_t spent = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = order[k];
+      work.budget = WorkBudget(share_of(limit, spent, n - k), stop);
+      looks[i] = objects[i].track.look(ev, in);
+      shares[i] = work.budget;
+      spent += work.budget.spent();
+    }
+    const std::vector<int> hidden_by = settle_overlaps(looks);
+    for (std::size_t i : order) {
+      if (looks[i].done) continue;
+      ObjectTrack& t = objects[i].track;
+      work.budget = shares[i];
+      if (hidden_by[i]) {
+        t.model->settle(Verdict::Refused);
+        looks[i].done = t.occluded("object " + std::to_string(hidden_by[i]) + " is in front of it");
+      } else {
+        looks[i].done = t.conclude(ev, in, looks[i]);
+      }
+      shares[i] = work.budget;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    TrackResult& r = results[i];
+    r = std::move(*looks[i].done);
+    r.id = objects[i].id;
+    r.inner_point = objects[i].track.state.track().inner;
+    r.work = shares[i].spent();
+    r.work_limit = shares[i].limit();
+    r.gesture = objects[i].track.state.pointer.take_gesture();
+  }
+  return results;
+}
+
+}  // namespace projtrack

@@ -1,0 +1,48 @@
+// MultiTracker's hidden part: one ObjectTrack per object, and one frame's work (its edges, its
+// work images, its budget) shared by them all (multi_frame.cpp).
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "projtrack/multi_tracker.hpp"
+#include "tracker/tracker_impl.hpp"
+
+namespace projtrack {
+
+struct MultiTracker::Impl {
+  struct Object {
+    int id = 0;
+    ObjectTrack track;
+  };
+  std::vector<Object> objects;  // in the order they were added
+  FrameWork work;
+  std::size_t max_objects = 1;
+  int next_id = 1;
+  const std::atomic<bool>* stop = nullptr;
+  int width = 0, height = 0;  // the last frame's size
+
+  Object* find(int id);
+  const Object* find(int id) const;
+  // Why a start at `p` (with `box`, when it has one) cannot be a new object (empty: it can): too
+  // many objects, or an object followed (or about to start) is there already.
+  std::string why_not_new(Point2i p, const Rect* box, int width, int height) const;
+  // The object added: its id.
+  Added add(Object&& o);
+
+  // One frame (multi_frame.cpp): its checks, then each object's look, the pixels two objects
+  // claim given to the one in front, and each object's verdict.
+  std::vector<TrackResult> track(const ColorView& frame, EdgeSource& edges, const FrameInput& in);
+  // The order objects look at a frame in: followed objects first, then starts (a start costs
+  // most, and takes what the others left of the frame's budget).
+  std::vector<std::size_t> look_order() const;
+  // Where two looks' silhouettes meet, the pixels go to the object whose model explains them
+  // better (the one in front; on a tie, the one added first); the other gives them up. The id of
+  // the object in front of each object that lost more than half its last area to it (0: none):
+  // that object is hidden on this frame.
+  std::vector<int> settle_overlaps(std::vector<Look>& looks);
+};
+
+}  // namespace projtrack
