@@ -37,16 +37,28 @@ bool has_silhouette(const Look& l) {
 
 }  // namespace
 
+namespace {
+
+// `s`'s rectangle in frame px.
+cv::Rect frame_box(const SilhouetteMask& s) {
+  return {s.rect.x * s.scale, s.rect.y * s.scale, s.rect.width * s.scale, s.rect.height * s.scale};
+}
+
+}  // namespace
+
 std::vector<int> MultiTracker::Impl::settle_overlaps(std::vector<Look>& looks) {
   const std::size_t n = objects.size();
-  std::vector<int> front_of(n, 0);
+  std::vector<int> front_of(n, 0), beside(n, 0);
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a + 1; b < n; ++b) {
       if (!has_silhouette(looks[a]) || !has_silhouette(looks[b])) continue;
       ObjectModel& ma = *objects[a].track.model;
       ObjectModel& mb = *objects[b].track.model;
-      const FramePixels both =
-          shared_pixels(ma.silhouette(width, height), mb.silhouette(width, height));
+      const SilhouetteMask sa = ma.silhouette(width, height), sb = mb.silhouette(width, height);
+      if ((frame_box(sa) & frame_box(sb)).empty()) continue;
+      beside[a] = objects[b].id;
+      beside[b] = objects[a].id;
+      const FramePixels both = shared_pixels(sa, sb);
       if (both.empty()) continue;
       const bool a_in_front = ma.explains(both) >= mb.explains(both);
       const std::size_t behind = a_in_front ? b : a;
@@ -55,16 +67,55 @@ std::vector<int> MultiTracker::Impl::settle_overlaps(std::vector<Look>& looks) {
       front_of[behind] = objects[a_in_front ? a : b].id;
     }
   }
+  // An object that lost more than half its area since it met another is hidden by it.
   std::vector<int> hidden_by(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const Track& t = objects[i].track.state.track();
-    if (!front_of[i] || looks[i].starting || !t.last) continue;
-    const double left = has_silhouette(looks[i])
-                            ? silhouette_area(objects[i].track.model->silhouette(width, height))
-                            : 0;
-    if (left < 0.5 * t.last->area) hidden_by[i] = front_of[i];
+    Object& o = objects[i];
+    const Track& t = o.track.state.track();
+    const bool met_before = o.met;
+    o.met = beside[i] != 0;
+    if (!o.met || looks[i].starting || !t.last) continue;
+    if (!met_before) o.area_before_met = t.last->area;
+    const double left =
+        has_silhouette(looks[i]) ? silhouette_area(o.track.model->silhouette(width, height)) : 0;
+    if (left < 0.5 * o.area_before_met) hidden_by[i] = front_of[i] ? front_of[i] : beside[i];
   }
   return hidden_by;
+}
+
+bool MultiTracker::Impl::still_covers(int front, std::size_t i) const {
+  const Object* f = find(front);
+  const Track& t = objects[i].track.state.track();
+  if (!f || !t.last) return false;
+  const SilhouetteMask s = f->track.model->silhouette(width, height);
+  if (s.empty()) return false;
+  const cv::Rect cover(s.rect.x * s.scale, s.rect.y * s.scale, s.rect.width * s.scale,
+                       s.rect.height * s.scale);
+  const Rect& b = t.last->bbox;
+  const cv::Rect seen(b.x, b.y, b.width, b.height);
+  return (cover & seen).area() * 2 >= seen.area();
+}
+
+TrackResult MultiTracker::Impl::conclude(std::size_t i, int hidden_by, FrameEvidence& ev,
+                                         const FrameInput& in, const Look& look) {
+  Object& o = objects[i];
+  ObjectTrack& t = o.track;
+  // Hidden before: found again once more than half of it shows, or out from behind that object.
+  const double seen =
+      has_silhouette(look) ? silhouette_area(t.model->silhouette(width, height)) : 0;
+  if (!hidden_by && o.hidden_by && seen < 0.5 * o.area_before_met && still_covers(o.hidden_by, i))
+    hidden_by = o.hidden_by;
+  if (!hidden_by) {
+    TrackResult r = t.conclude(ev, in, look);
+    if (has_features(r.status)) o.hidden_by = 0;  // found again
+    return r;
+  }
+  // Hidden: the model keeps the object's colours, not where the picture's motion (the object in
+  // front's) would carry it; it looks for it again by its colours near where it was.
+  t.model->settle(Verdict::Refused);
+  t.model->forget(Forget::Position);
+  o.hidden_by = hidden_by;
+  return t.occluded("object " + std::to_string(hidden_by) + " is in front of it");
 }
 
 namespace {
@@ -117,14 +168,8 @@ std::vector<TrackResult> MultiTracker::Impl::track(const ColorView& frame, EdgeS
     const std::vector<int> hidden_by = settle_overlaps(looks);
     for (std::size_t i : order) {
       if (looks[i].done) continue;
-      ObjectTrack& t = objects[i].track;
       work.budget = shares[i];
-      if (hidden_by[i]) {
-        t.model->settle(Verdict::Refused);
-        looks[i].done = t.occluded("object " + std::to_string(hidden_by[i]) + " is in front of it");
-      } else {
-        looks[i].done = t.conclude(ev, in, looks[i]);
-      }
+      looks[i].done = conclude(i, hidden_by[i], ev, in, looks[i]);
       shares[i] = work.budget;
     }
   }

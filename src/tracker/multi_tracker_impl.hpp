@@ -16,6 +16,14 @@ struct MultiTracker::Impl {
   struct Object {
     int id = 0;
     ObjectTrack track;
+    // Hidden by another object (its id; 0: not hidden): the model looks for it by its colours
+    // near where it was, and while it is not found where that object still covers it, it is
+    // occluded.
+    int hidden_by = 0;
+    // Whether it gave pixels up to an object in front on the last frame, and its area before it
+    // met that object: hidden is more than half of that area covered.
+    bool met = false;
+    double area_before_met = 0;
   };
   std::vector<Object> objects;  // in the order they were added
   FrameWork work;
@@ -40,9 +48,15 @@ struct MultiTracker::Impl {
   std::vector<std::size_t> look_order() const;
   // Where two looks' silhouettes meet, the pixels go to the object whose model explains them
   // better (the one in front; on a tie, the one added first); the other gives them up. The id of
-  // the object in front of each object that lost more than half its last area to it (0: none):
-  // that object is hidden on this frame.
+  // the object in front of each object that lost more than half its area since it met it (0:
+  // none): that object is hidden on this frame.
   std::vector<int> settle_overlaps(std::vector<Look>& looks);
+  // Object `i`'s verdict on this frame: occluded when `hidden_by` (newly, or still where the
+  // object in front covers it and not found), else the verdict of its look.
+  TrackResult conclude(std::size_t i, int hidden_by, FrameEvidence& ev, const FrameInput& in,
+                       const Look& look);
+  // Whether object `front` (an id) still covers where object `i` was last seen.
+  bool still_covers(int front, std::size_t i) const;
 };
 
 }  // namespace projtrack

@@ -108,21 +108,22 @@ TEST(Status, NamesAreDistinctAndFeaturesOnlyWhereComputed) {
   for (int s = 0; s <= static_cast<int>(kLastTrackStatus); ++s)
     track_names.insert(status_name(static_cast<TrackStatus>(s)));
   EXPECT_EQ(estimate_names.size(), 10u);
-  EXPECT_EQ(track_names.size(), 11u);
+  EXPECT_EQ(track_names.size(), 12u);
   EXPECT_EQ(estimate_names.count("unknown") + track_names.count("unknown"), 0u);
   EXPECT_EQ(status_name(static_cast<EstimateStatus>(10)), "unknown");
-  EXPECT_EQ(status_name(static_cast<TrackStatus>(11)), "unknown");
+  EXPECT_EQ(status_name(static_cast<TrackStatus>(12)), "unknown");
   // Every name the element can post, each once: the two kinds share the names of what the
   // tracker reports as it came.
   std::set<std::string_view> all = estimate_names;
   all.insert(track_names.begin(), track_names.end());
-  EXPECT_EQ(all.size(), 13u);
+  EXPECT_EQ(all.size(), 14u);
   EXPECT_TRUE(has_features(EstimateStatus::ReachedBorder));
   EXPECT_FALSE(has_features(EstimateStatus::InnerPointOnEdge));
   EXPECT_TRUE(has_features(TrackStatus::CoversFrame));
   EXPECT_FALSE(has_features(TrackStatus::Lost));
   EXPECT_FALSE(has_features(TrackStatus::OverBudget));
   EXPECT_FALSE(has_features(TrackStatus::Interrupted));
+  EXPECT_FALSE(has_features(TrackStatus::Occluded));
 }
 
 // The tracker reports an estimate it takes as it is under the estimate's own name, with or
