@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "projtrack/multi_tracker.hpp"
 #include "projtrack/names.hpp"
 #include "projtrack/tracker.hpp"
 #include "projtrack/work_budget.hpp"
@@ -254,6 +255,30 @@ TEST_P(ModelContract, TheStopFlagEndsTheFrameAndKeepsTheTrack) {
   EXPECT_EQ(r.status, TrackStatus::Interrupted) << model();
   stop = false;
   EXPECT_TRUE(on_object(t.track(scene_frame(5).colour(), 5, s), scene_frame(5))) << model();
+}
+
+// A MultiTracker follows each object with the model as a Tracker does (its one-object results
+// are a Tracker's), and a second object beside it does not change the first one's.
+TEST_P(ModelContract, AMultiTrackerFollowsEachObjectAsATracker) {
+  const Settings s = settings_for(kind());
+  Tracker alone;
+  MultiTracker both;
+  const SceneFrame first = scene_frame(0);
+  alone.seed_box(first.box);
+  const Added object = both.add_box(first.box, first.gray.cols, first.gray.rows);
+  ASSERT_TRUE(object) << object.why;
+  // The second object: a patch of the background far from the ellipse, which stays put.
+  ASSERT_TRUE(both.add_point({first.gray.cols - 20, 20}, first.gray.cols, first.gray.rows));
+  for (int i = 0; i < 12; ++i) {
+    const SceneFrame f = scene_frame(i);
+    const TrackResult r = alone.track(f.colour(), i / 30.0, s);
+    const std::vector<TrackResult> rs = both.track(f.colour(), i / 30.0, s);
+    ASSERT_EQ(rs.size(), 2u);
+    EXPECT_EQ(rs[0].id, object.id);
+    EXPECT_EQ(rs[0].status, r.status) << model() << ", frame " << i << ": " << rs[0].detail;
+    EXPECT_EQ(rs[0].features.area, r.features.area) << model() << ", frame " << i;
+    EXPECT_TRUE(on_object(rs[0], f)) << model() << ", frame " << i;
+  }
 }
 
 std::vector<ObjectModelKind> every_model() {
