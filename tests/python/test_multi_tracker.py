@@ -6,6 +6,7 @@ gives on the same frames; and docs/python.md's two-object loop, run as written o
 vtest.avi (skipped without it). Run with PYTHONPATH=<build>/python."""
 import os
 import re
+import threading
 import unittest
 
 import numpy as np
@@ -105,6 +106,51 @@ class TwoObjects(unittest.TestCase):
         tracker = projtrack.Tracker()
         self.assertEqual(tracker.track(frame(0), point=red(0)[:2]).id, 0)
         self.assertNotIn(' id=', repr(tracker.track(frame(1))))
+
+
+class Frames(unittest.TestCase):
+    """Frames of another size or kind, taken as Tracker takes them, for every object; a start in
+    them is in their pixels."""
+
+    def test_new_size_and_kind(self):
+        tracker = projtrack.MultiTracker()
+        a = tracker.add(frame(0), point=red(0)[:2])
+        b = tracker.add(frame(0), point=blue(0)[:2])
+        for i in range(4):
+            tracker.track(frame(i))
+        small = frame(4)[::2, ::2].copy()  # half the size: the objects follow, scaled
+        results = tracker.track(small)
+        for id, where in ((a, red(4)), (b, blue(4))):
+            self.assertTrue(results[id].ok, results[id])
+            self.assertLess(abs(results[id].centroid[0] - where[0] / 2), 3, results[id])
+            self.assertEqual(results[id].mask.shape, (H // 2, W // 2))
+        gray = np.ascontiguousarray(frame(5)[..., 2])  # another kind: the colours relearned
+        self.assertEqual(list(tracker.track(gray)), [a, b])
+        # A start on a frame of the first size: the objects are scaled back before it is checked.
+        with self.assertRaisesRegex(ValueError, 'add: object 1 is there already'):
+            tracker.add(frame(6), point=red(6)[:2])
+        self.assertEqual(tracker.mask(a).shape, (H, W))
+
+    def test_threads_share_one_tracker(self):
+        tracker = projtrack.MultiTracker()
+        tracker.add(frame(0), point=red(0)[:2])
+        tracker.add(frame(0), point=blue(0)[:2])
+        errors = []
+
+        def work():
+            try:
+                for i in range(4):
+                    tracker.track(frame(i))
+                    tracker.ids
+            except Exception as e:  # noqa: BLE001 -- reported below
+                errors.append(e)
+        threads = [threading.Thread(target=work) for _ in range(3)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        self.assertEqual(errors, [])
+        self.assertEqual(tracker.frames, 12)
 
 
 class SameAsTracker(unittest.TestCase):
