@@ -85,6 +85,7 @@
 #include "element.hpp"
 #include "events.hpp"
 #include "meta.hpp"
+#include "objects.hpp"
 #include "properties.hpp"
 #include "seeds.hpp"
 #include "stream.hpp"
@@ -93,7 +94,15 @@ GST_DEBUG_CATEGORY(gst_projtrack_debug);
 
 using projtrack::gst::SeedCommand;
 
-enum { SIGNAL_TRACK_POINT, SIGNAL_TRACK_BOX, SIGNAL_RESET, N_SIGNALS };
+enum {
+  SIGNAL_TRACK_POINT,
+  SIGNAL_TRACK_BOX,
+  SIGNAL_RESET,
+  SIGNAL_ADD_BOX,
+  SIGNAL_ADD_POINT,
+  SIGNAL_REMOVE_OBJECT,
+  N_SIGNALS
+};
 
 static guint signals[N_SIGNALS];
 
@@ -172,6 +181,17 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   signals[SIGNAL_RESET] = g_signal_new_class_handler("reset", G_TYPE_FROM_CLASS(klass), action,
                                                      G_CALLBACK(projtrack::gst::reset), nullptr,
                                                      nullptr, nullptr, G_TYPE_NONE, 0);
+  // Objects followed at once, each with its id: gint id = 0; g_signal_emit_by_name(element,
+  // "add-box", x, y, width, height, &id).
+  signals[SIGNAL_ADD_BOX] = g_signal_new_class_handler(
+      "add-box", G_TYPE_FROM_CLASS(klass), action, G_CALLBACK(projtrack::gst::add_box), nullptr,
+      nullptr, nullptr, G_TYPE_INT, 4, G_TYPE_INT, G_TYPE_INT, G_TYPE_INT, G_TYPE_INT);
+  signals[SIGNAL_ADD_POINT] = g_signal_new_class_handler(
+      "add-point", G_TYPE_FROM_CLASS(klass), action, G_CALLBACK(projtrack::gst::add_point), nullptr,
+      nullptr, nullptr, G_TYPE_INT, 2, G_TYPE_INT, G_TYPE_INT);
+  signals[SIGNAL_REMOVE_OBJECT] = g_signal_new_class_handler(
+      "remove-object", G_TYPE_FROM_CLASS(klass), action, G_CALLBACK(projtrack::gst::remove_object),
+      nullptr, nullptr, nullptr, G_TYPE_BOOLEAN, 1, G_TYPE_INT);
 
   gst_element_class_set_static_metadata(
       element_class, "Object projection feature tracker", "Filter/Analyzer/Video",
