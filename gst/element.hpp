@@ -35,6 +35,9 @@ struct Objects {
   MultiTracker tracker{static_cast<std::size_t>(kMaxObjects)};
   // Per id: the status of the last message posted (updates=on-change), as Stream::last_posted.
   std::map<int, std::optional<TrackStatus>> last_posted;
+  // Per id: the track-id of its features (next_track_id(), new on every acquisition), so that
+  // every projtrack structure names its track as the single track's does.
+  std::map<int, int> track_ids;
 };
 
 // Per-stream state: created in set_info, dropped in stop; touched by the streaming thread only.

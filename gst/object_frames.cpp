@@ -13,6 +13,9 @@ ObjectsFrame track_objects(Objects& objects, const ColorView& color, double t,
   if (objects.tracker.size() == 0) return out;
   out.results = objects.tracker.track(color, t, bundle);
   for (const TrackResult& r : out.results) {
+    int& track_id = objects.track_ids[r.id];
+    if (r.acquired || track_id == 0) track_id = next_track_id();
+    out.track_ids.push_back(track_id);
     out.outlines.push_back(has_features(r.status)
                                ? outline_polygons(objects.tracker.silhouette(r.id))
                                : std::vector<std::vector<Point2i>>{});
@@ -27,7 +30,7 @@ void report_objects(GstProjtrack* self, GstBuffer* buffer, const ElementSettings
   for (std::size_t i = 0; i < frame.results.size(); ++i) {
     const TrackResult& r = frame.results[i];
     // No track-id: an object keeps its id through losses and finds; `id` names it.
-    const FrameReport report{r,        s.method,  st.element_name.c_str(), 0,
+    const FrameReport report{r,        s.method,  st.element_name.c_str(), frame.track_ids[i],
                              st.width, st.height, frame.outlines[i],       {}};
     if (has_features(r.status)) attach_meta(buffer, report);
     if (frame.posts[i])

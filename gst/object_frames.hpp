@@ -17,6 +17,7 @@ namespace projtrack::gst {
 struct ObjectsFrame {
   std::vector<TrackResult> results;
   std::vector<std::vector<std::vector<Point2i>>> outlines;  // frame coordinates, per object
+  std::vector<int> track_ids;                               // per object
   std::vector<bool> posts;  // whether the object's message is posted (`updates`, per object)
   std::vector<std::string> refused;  // starts of start-boxes/-points refused on a restart
 };

@@ -25,11 +25,20 @@ std::string serialized(const GValue* v) {
   return out;
 }
 
+// An entry as a user wrote it, <1, 2, 3> (gst_value_serialize() would add each item's type).
+std::string entry_text(const GValue* entry) {
+  if (!GST_VALUE_HOLDS_ARRAY(entry)) return serialized(entry);
+  std::string out = "<";
+  for (guint k = 0; k < gst_value_array_get_size(entry); ++k)
+    out += (k ? ", " : "") + serialized(gst_value_array_get_value(entry, k));
+  return out + ">";
+}
+
 // Why entry `i` of `what` is not a tuple of `arity` ints (`shape` names them), or nothing.
 std::string malformed_entry(const GValue* entry, guint i, guint arity, const char* what,
                             const char* shape, Tuple& out) {
   const std::string named =
-      std::string(what) + " refused: entry " + std::to_string(i + 1) + " " + serialized(entry);
+      std::string(what) + " refused: entry " + std::to_string(i + 1) + " " + entry_text(entry);
   if (!GST_VALUE_HOLDS_ARRAY(entry)) return named + " is not a tuple " + shape;
   const guint n = gst_value_array_get_size(entry);
   if (n != arity)
@@ -180,6 +189,7 @@ gboolean remove_object(GstProjtrack* self, gint id) {
     if (Stream* st = self->state->stream.get()) {
       removed = st->objects.tracker.remove(id);
       st->objects.last_posted.erase(id);
+      st->objects.track_ids.erase(id);
     }
   }
   if (removed)
@@ -195,6 +205,7 @@ std::vector<std::string> restart_objects(Objects& objects, const ElementSettings
                                          int height) {
   objects.tracker.clear();
   objects.last_posted.clear();
+  objects.track_ids.clear();
   std::vector<std::string> refused;
   const auto add = [&](const std::string& what, const AddTo& to) {
     std::string why = over_limit(objects, s.max_objects);

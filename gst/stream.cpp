@@ -176,10 +176,9 @@ gboolean set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info, GstCa
   self->state->locked.frame_width = width;
   self->state->locked.frame_height = height;
   st.element_name = GST_OBJECT_NAME(self);  // for the metas: the name is fixed while streaming
-  if (first) {
+  if (first)
     reseed_locked(self);
-    self->state->locked.restart_objects = true;  // from start-boxes and start-points
-  } else if (resized)
+  else if (resized)
     rescale_seeds_locked(self, st.width, st.height, width, height);
   GST_OBJECT_UNLOCK(self);
   if (resized) {
@@ -210,6 +209,7 @@ gboolean stop(GstBaseTransform* trans) {
   }
   GST_OBJECT_LOCK(self);
   reseed_locked(self);
+  self->state->locked.restart_objects = true;  // the next stream starts from the lists again
   self->state->locked.tracked_x = self->state->locked.tracked_y = -1;
   GST_OBJECT_UNLOCK(self);
   return TRUE;
