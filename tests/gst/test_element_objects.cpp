@@ -9,6 +9,7 @@
 #include <gst/video/video.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -342,6 +343,73 @@ TEST_F(Objects, UpdatesOnChangeAppliesPerObject) {
   EXPECT_EQ(messages[2].size(), 1u);
   for (int i = 0; i < 3; ++i) push_frame();
   EXPECT_EQ(by_id().size(), 0u) << "nothing changed";
+}
+
+}  // namespace
+
+namespace {
+
+// The same two discs in BGRA, for the alpha and the overlay.
+class ObjectsBgra : public Objects {
+ protected:
+  void SetUp() override {
+    ProjtrackHarness::SetUp();
+    gst_harness_set_src_caps_str(h_, projtrack::test::video_caps("BGRA", kWidth, kHeight).c_str());
+  }
+  GstBuffer* push_bgra() {
+    GstBuffer* bgra = projtrack::test::converted(
+        two_discs(discs_at(frame_++)), projtrack::test::video_caps("GRAY8", kWidth, kHeight),
+        projtrack::test::video_caps("BGRA", kWidth, kHeight));
+    return push_next(bgra);
+  }
+};
+
+// The 4 bytes (B, G, R, A) of pixel (x, y) of a BGRA buffer.
+std::array<int, 4> bgra_at(GstBuffer* b, int x, int y) {
+  GstMapInfo map;
+  gst_buffer_map(b, &map, GST_MAP_READ);
+  const guint8* p = map.data + (static_cast<gsize>(y) * kWidth + x) * 4;
+  const std::array<int, 4> out{p[0], p[1], p[2], p[3]};
+  gst_buffer_unmap(b, &map);
+  return out;
+}
+
+TEST_F(ObjectsBgra, AlphaIdsChoosesWhichObjectsAreCutOut) {
+  g_object_set(h_->element, "alpha-mask", TRUE, nullptr);
+  gst_util_set_object_arg(G_OBJECT(h_->element), "start-boxes", "<<35,65,50,50>,<145,55,50,50>>");
+  Discs d = discs_at(frame_);
+  GstBuffer* out = push_bgra();
+  EXPECT_EQ(bgra_at(out, d.x1, d.y1)[3], 255) << "every object by default";
+  EXPECT_EQ(bgra_at(out, d.x2, d.y2)[3], 255);
+  EXPECT_EQ(bgra_at(out, 5, 5)[3], 0);
+  gst_buffer_unref(out);
+  gst_util_set_object_arg(G_OBJECT(h_->element), "alpha-ids", "<2>");
+  d = discs_at(frame_);
+  out = push_bgra();
+  EXPECT_EQ(bgra_at(out, d.x1, d.y1)[3], 0) << "object 1 is not chosen";
+  EXPECT_EQ(bgra_at(out, d.x2, d.y2)[3], 255);
+  gst_buffer_unref(out);
+}
+
+// Each object's box in its own colour (object 1's is (0, 160, 255), object 2's (255, 0, 255)).
+TEST_F(ObjectsBgra, TheOverlayDrawsEachObjectInItsColour) {
+  g_object_set(h_->element, "draw", TRUE, nullptr);
+  gst_util_set_object_arg(G_OBJECT(h_->element), "draw-flags", "box");
+  gst_util_set_object_arg(G_OBJECT(h_->element), "start-boxes", "<<35,65,50,50>,<145,55,50,50>>");
+  GstBuffer* out = push_bgra();
+  gpointer state = nullptr;
+  int seen = 0;
+  while (GstMeta* m = gst_buffer_iterate_meta_filtered(
+             out, &state, GST_VIDEO_REGION_OF_INTEREST_META_API_TYPE)) {
+    auto* roi = reinterpret_cast<GstVideoRegionOfInterestMeta*>(m);
+    const std::array<int, 4> left = bgra_at(out, roi->x, roi->y + roi->h / 2);
+    const std::array<int, 3> bgr{left[0], left[1], left[2]};
+    if (roi->id == 1) EXPECT_EQ(bgr, (std::array<int, 3>{255, 160, 0}));
+    if (roi->id == 2) EXPECT_EQ(bgr, (std::array<int, 3>{255, 0, 255}));
+    ++seen;
+  }
+  EXPECT_EQ(seen, 2);
+  gst_buffer_unref(out);
 }
 
 }  // namespace
