@@ -345,6 +345,52 @@ TEST_F(Objects, UpdatesOnChangeAppliesPerObject) {
   EXPECT_EQ(by_id().size(), 0u) << "nothing changed";
 }
 
+// A flush is a seek: the objects start anew from the lists (new ids), and one added by a signal
+// is dropped with the moment it was added in.
+TEST_F(Objects, AFlushRestartsTheObjectsFromTheLists) {
+  gst_util_set_object_arg(G_OBJECT(h_->element), "start-points", "<<60,90>>");
+  push_frame();
+  EXPECT_EQ(add_point(170, 80 + frame_), 2);
+  push_frame();
+  EXPECT_EQ(by_id().size(), 2u);
+  EXPECT_TRUE(gst_harness_push_event(h_, gst_event_new_flush_start()));
+  EXPECT_TRUE(gst_harness_push_event(h_, gst_event_new_flush_stop(TRUE)));
+  GstSegment segment;
+  gst_segment_init(&segment, GST_FORMAT_TIME);
+  EXPECT_TRUE(gst_harness_push_event(h_, gst_event_new_segment(&segment)));
+  frame_ = 0;
+  push_frame();
+  std::map<int, std::vector<std::string>> messages = by_id();
+  EXPECT_EQ(messages.size(), 1u);
+  EXPECT_EQ(messages[3].size(), 1u) << "the list's point, with a new id";
+}
+
+// A bus sync handler runs in the streaming thread: adding an object from it must not wait for the
+// frame that posted the message (the element posts after releasing its locks).
+TEST_F(Objects, AnObjectCanBeAddedFromABusSyncHandler) {
+  gst_util_set_object_arg(G_OBJECT(h_->element), "start-points", "<<60,90>>");
+  struct Added {
+    GstElement* element;
+    int id = -1;
+    int y = 0;
+  } added{h_->element, -1, 0};
+  gst_bus_set_sync_handler(
+      bus_,
+      [](GstBus*, GstMessage* m, gpointer data) {
+        auto* a = static_cast<Added*>(data);
+        if (a->id < 0 && gst_message_has_name(m, "projtrack"))
+          g_signal_emit_by_name(a->element, "add-point", 170, a->y, &a->id);
+        return GST_BUS_PASS;
+      },
+      &added, nullptr);
+  added.y = 80 + frame_;
+  push_frame();
+  EXPECT_EQ(added.id, 2);
+  push_frame();
+  gst_bus_set_sync_handler(bus_, nullptr, nullptr, nullptr);
+  EXPECT_EQ(by_id()[2].size(), 1u);
+}
+
 }  // namespace
 
 namespace {
