@@ -29,7 +29,6 @@ void report_objects(GstProjtrack* self, GstBuffer* buffer, const ElementSettings
   const Stream& st = *self->state->stream;
   for (std::size_t i = 0; i < frame.results.size(); ++i) {
     const TrackResult& r = frame.results[i];
-    // No track-id: an object keeps its id through losses and finds; `id` names it.
     const FrameReport report{r,        s.method,  st.element_name.c_str(), frame.track_ids[i],
                              st.width, st.height, frame.outlines[i],       {}};
     if (has_features(r.status)) attach_meta(buffer, report);
