@@ -450,8 +450,9 @@ TEST_F(ObjectsBgra, TheOverlayDrawsEachObjectInItsColour) {
     auto* roi = reinterpret_cast<GstVideoRegionOfInterestMeta*>(m);
     const std::array<int, 4> left = bgra_at(out, roi->x, roi->y + roi->h / 2);
     const std::array<int, 3> bgr{left[0], left[1], left[2]};
-    if (roi->id == 1) EXPECT_EQ(bgr, (std::array<int, 3>{255, 160, 0}));
-    if (roi->id == 2) EXPECT_EQ(bgr, (std::array<int, 3>{255, 0, 255}));
+    const std::array<int, 3> expected =
+        roi->id == 1 ? std::array<int, 3>{255, 160, 0} : std::array<int, 3>{255, 0, 255};
+    EXPECT_EQ(bgr, expected) << "object " << roi->id;
     ++seen;
   }
   EXPECT_EQ(seen, 2);
