@@ -6,7 +6,8 @@ frames, then gray ones or another size), both started from the same box on the f
 frame's status, centroid and area are compared, through a size change (640x480 -> 320x240 at
 frame 20), a format change (BGR -> gray at frame 20) and a clip joined to itself at half its size
 after all its frames (the picture jumps back as the size changes: the cup is where it was on frame
-0). Exit status 77 (skipped) without the clip
+0), and two objects (the cup from its box, the hand from a point) through the element's
+start-boxes and start-points and a MultiTracker, compared by id. Exit status 77 (skipped) without the clip
 (opencv-doc) or the element."""
 import gzip
 import os
@@ -33,6 +34,7 @@ FPS = 30
 # move with it): the track after the format change is judged before that.
 GRAY_HOLDS = 42
 JOINED = 30
+HAND = (520, 230)  # a point on the hand that holds the cup, frame 0 at 640x480
 
 
 def cup_frames(n):
@@ -81,9 +83,10 @@ def run_python(frames):
     return rows
 
 
-def run_element(frames, props=None):
+def run_element(frames, props=None, by_id=False):
     """Every frame's (status, centroid, area) from the element's messages; `props`: its
-    properties (default: acquisition=manual and BOX as the start box, as Python's init())."""
+    properties (default: acquisition=manual and BOX as the start box, as Python's init());
+    `by_id`: {id: rows}, from the messages' `id` (0 without one)."""
     if props is None:
         props = 'acquisition=manual start-box="<{},{},{},{}>"'.format(*BOX)
     pipeline = Gst.parse_launch(f'appsrc name=src format=time ! projtrack name=t {props} ! '
@@ -115,10 +118,24 @@ def run_element(frames, props=None):
         if s.get_name() != 'projtrack':
             continue
         has = s.has_field('area')
-        rows.append((s.get_string('status'),
-                     (s.get_value('centroid-x'), s.get_value('centroid-y')) if has else None,
-                     s.get_value('area') if has else None))
+        row = (s.get_string('status'),
+               (s.get_value('centroid-x'), s.get_value('centroid-y')) if has else None,
+               s.get_value('area') if has else None)
+        rows.append((s.get_value('id') if s.has_field('id') else 0, row) if by_id else row)
     pipeline.set_state(Gst.State.NULL)
+    if by_id:
+        return {id: [row for i, row in rows if i == id] for id in sorted({i for i, _ in rows})}
+    return rows
+
+
+def run_python_objects(frames):
+    """{id: rows} of a MultiTracker with the cup from BOX and the hand from HAND."""
+    t = projtrack.MultiTracker()
+    ids = [t.add(frames[0][0], box=BOX), t.add(frames[0][0], point=HAND)]
+    rows = {id: [] for id in ids}
+    for f, _ in frames:
+        for id, r in t.track(f, mask=False).items():
+            rows[id].append((r.status, r.centroid, r.area))
     return rows
 
 
@@ -164,6 +181,19 @@ def main():
               f'{sum(e[0] == p[0] for e, p in zip(element, python))} statuses agree')
         if ok < 0.9 * len(after):
             failures.append(f'{change}: the track is not kept after the change ({after})')
+    # Several objects: the cup from its box and the hand from a point, in the element's
+    # start-boxes and start-points and in a MultiTracker, each object by its id.
+    given = scenario(frames, 'none')
+    element = run_element(given, 'start-boxes="<<{},{},{},{}>>" start-points="<<{},{}>>"'.format(
+        *BOX, *HAND), by_id=True)
+    python = run_python_objects(given)
+    if sorted(element) != sorted(python):
+        failures.append(f'objects: the element reported ids {sorted(element)}, '
+                        f'Python {sorted(python)}')
+    for id in python:
+        failures += compare(f'object {id}', element.get(id, []), python[id])
+        print(f'object {id}: measured on {sum(r[1] is not None for r in python[id])} of {len(given)} frames; '
+              f'{sum(e[0] == p[0] for e, p in zip(element.get(id, []), python[id]))} statuses agree')
     for f in failures:
         print(f)
     return 1 if failures else 0
