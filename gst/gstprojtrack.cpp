@@ -2,10 +2,12 @@
  * SECTION:element-projtrack
  * @title: projtrack
  *
- * Tracks one object in video from a point inside it (the *inner point*), a box around it or by
- * itself, with the estimators of Quesada & León, "Filling-Based Techniques Applied to Object
- * Projection Feature Estimation", or with ours beyond the paper, gap-tolerant filling (the
- * default method): on every buffer it reports the object's centroid, area (px²) and bounding box.
+ * Tracks an object in video from a point inside it (the *inner point*), a box around it or by
+ * itself, or several objects at once, each with its id (`start-boxes`, `start-points`,
+ * `add-box`, `add-point`), with the estimators of Quesada & León, "Filling-Based Techniques
+ * Applied to Object Projection Feature Estimation", or with ours beyond the paper, gap-tolerant
+ * filling (the default method): on every buffer it reports each object's centroid, area (px²)
+ * and bounding box.
  *
  * With `object-model=flow` (the default) it follows the whole object: its last silhouette is
  * carried along the picture's dense motion and cut from its surroundings by the colours (chroma
@@ -209,8 +211,8 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
 
   gst_element_class_set_static_metadata(
       element_class, "Object projection feature tracker", "Filter/Analyzer/Video",
-      "Tracks one object from its edges and an inner point: centroid, area, box, outline, 3D "
-      "pointer",
+      "Tracks an object (or several, each with its id) from a point, a box or by itself: "
+      "centroid, area, box, outline, 3D pointer",
       PROJTRACK_CONTACT);
   gst_element_class_add_static_metadata(element_class, GST_ELEMENT_METADATA_DOC_URI,
                                         PROJTRACK_DOC_URI);
