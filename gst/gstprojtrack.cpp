@@ -211,8 +211,7 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
 
   gst_element_class_set_static_metadata(
       element_class, "Object projection feature tracker", "Filter/Analyzer/Video",
-      "Tracks an object (or several, each with its id) from a point, a box or by itself: "
-      "centroid, area, box, outline, 3D pointer",
+      "Tracks objects, each with its id: centroid, area, box, outline, 3D pointer",
       PROJTRACK_CONTACT);
   gst_element_class_add_static_metadata(element_class, GST_ELEMENT_METADATA_DOC_URI,
                                         PROJTRACK_DOC_URI);
