@@ -85,14 +85,6 @@ void refuse_list_locked(GstProjtrack* self, const std::string& why) {
   note += (note.empty() ? "" : "; ") + why;
 }
 
-// Why no object may be added to `objects` now that `max_objects` are allowed, or nothing.
-std::string over_limit(const Objects& objects, int max_objects) {
-  const std::size_t n = objects.tracker.size();
-  if (n < static_cast<std::size_t>(max_objects)) return {};
-  return "already following " + std::to_string(n) + " objects, max-objects is " +
-         std::to_string(max_objects);
-}
-
 // A box is clipped to the picture, as start-box is; wholly outside it, the library says why.
 Added add_box_to(Objects& objects, const Rect& box, int width, int height) {
   const Rect clipped = clip_to_frame(box, width, height);
@@ -114,10 +106,10 @@ gint add_object(GstProjtrack* self, const std::string& what, const AddTo& add) {
     Stream* st = self->state->stream.get();
     if (!st || width <= 0 || height <= 0)
       added.why = "no video yet (no caps): give start-boxes or start-points before it flows";
-    else if (std::string why = over_limit(st->objects, max_objects); !why.empty())
-      added.why = std::move(why);
-    else
+    else {
+      st->objects.tracker.set_max_objects(static_cast<std::size_t>(max_objects));
       added = add(st->objects, width, height);
+    }
   }
   if (added) {
     GST_INFO_OBJECT(self, "%s: object %d", what.c_str(), added.id);
@@ -207,9 +199,9 @@ std::vector<std::string> restart_objects(Objects& objects, const ElementSettings
   objects.last_posted.clear();
   objects.track_ids.clear();
   std::vector<std::string> refused;
+  objects.tracker.set_max_objects(static_cast<std::size_t>(s.max_objects));
   const auto add = [&](const std::string& what, const AddTo& to) {
-    std::string why = over_limit(objects, s.max_objects);
-    if (why.empty()) why = to(objects, width, height).why;
+    const std::string why = to(objects, width, height).why;
     if (!why.empty()) refused.push_back(what + " refused: " + why);
   };
   for (const Rect& b : s.start_boxes)

@@ -55,6 +55,9 @@ class MultiTracker {
 
   std::size_t size() const;
   std::size_t max_objects() const;
+  // At most `max_objects` objects from now on (0 is taken as 1): the objects followed stay, and
+  // a start is refused while as many are followed.
+  void set_max_objects(std::size_t max_objects);
   // The ids followed, in the order they were added.
   std::vector<int> ids() const;
   // Whether object `id` is followed.

@@ -44,7 +44,9 @@ bool is_on(const ObjectTrack& t, Point2i p, int width, int height) {
 std::string MultiTracker::Impl::why_not_new(Point2i p, const Rect* box, int w, int h) const {
   if (w <= 0 || h <= 0) return "the frame has no size";
   if (objects.size() >= max_objects)
-    return "already following " + std::to_string(objects.size()) + " objects, max-objects";
+    return "already following " + std::to_string(objects.size()) +
+           (objects.size() == 1 ? " object" : " objects") + ", the most at once: max objects is " +
+           std::to_string(max_objects);
   for (const Object& o : objects) {
     const bool pending_here = box && !o.track.state.track().last && o.track.state.track().inner &&
                               box->contains(*o.track.state.track().inner);
@@ -113,6 +115,9 @@ bool MultiTracker::remove(int id) {
 void MultiTracker::clear() { impl_->objects.clear(); }
 std::size_t MultiTracker::size() const { return impl_->objects.size(); }
 std::size_t MultiTracker::max_objects() const { return impl_->max_objects; }
+void MultiTracker::set_max_objects(std::size_t max_objects) {
+  impl_->max_objects = std::max<std::size_t>(max_objects, 1);
+}
 bool MultiTracker::contains(int id) const { return impl_->find(id) != nullptr; }
 
 std::vector<int> MultiTracker::ids() const {

@@ -301,14 +301,14 @@ TEST_F(Objects, MaxObjectsIsEnforced) {
   gst_util_set_object_arg(G_OBJECT(h_->element), "start-boxes", "<<35,65,50,50>,<145,55,50,50>>");
   push_frame();
   std::string w = warnings();
-  EXPECT_NE(w.find("start-boxes entry <145, 55, 50, 50> refused: already following 1 objects, "
-                   "max-objects is 1"),
+  EXPECT_NE(w.find("start-boxes entry <145, 55, 50, 50> refused: already following 1 object, "
+                   "the most at once: max objects is 1"),
             std::string::npos)
       << w;
   push_frame();
   EXPECT_EQ(by_id().size(), 1u);
   EXPECT_EQ(add_point(170, 80 + frame_), 0);
-  EXPECT_NE(warnings().find("max-objects is 1"), std::string::npos);
+  EXPECT_NE(warnings().find("max objects is 1"), std::string::npos);
   g_object_set(h_->element, "max-objects", 2u, nullptr);
   EXPECT_EQ(add_point(170, 80 + frame_), 2);
 }

@@ -134,14 +134,20 @@ TEST(MultiTracker, RefusesStartsThatCannotBeNewObjectsWithAReason) {
   ASSERT_TRUE(mt.add_box(f.object[1].box, kW, kH));
   const Added third = mt.add_point({kW / 2, 20}, kW, kH);
   EXPECT_FALSE(third);
-  EXPECT_NE(third.why.find("max-objects"), std::string::npos) << third.why;
+  EXPECT_NE(third.why.find("max objects is 2"), std::string::npos) << third.why;
+  mt.set_max_objects(3);
+  EXPECT_TRUE(mt.add_point({kW / 2, 20}, kW, kH)) << "one more once max objects is 3";
+  mt.set_max_objects(1);
+  EXPECT_EQ(mt.size(), 3u) << "the objects followed stay";
+  EXPECT_FALSE(mt.add_point({kW / 2, kH - 20}, kW, kH));
+  mt.set_max_objects(8);
   EXPECT_FALSE(mt.remove(7));
   EXPECT_TRUE(mt.remove(1));
   EXPECT_FALSE(mt.contains(1));
   const Added next = mt.add_point(in_orange, kW, kH);
   ASSERT_TRUE(next) << next.why;
-  EXPECT_EQ(next.id, 3) << "ids are never reused";
-  EXPECT_EQ(mt.ids(), (std::vector<int>{2, 3}));
+  EXPECT_EQ(next.id, 4) << "ids are never reused";
+  EXPECT_EQ(mt.ids(), (std::vector<int>{2, 3, 4}));
 }
 
 // The orange ellipse passes in front of the blue one: the blue one is occluded while hidden,
