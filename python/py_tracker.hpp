@@ -5,29 +5,17 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include <atomic>
-#include <mutex>
-
-#include "frames.hpp"
 #include "projtrack/tracker.hpp"
 #include "result.hpp"
+#include "seeds.hpp"
 #include "settings.hpp"
+#include "stream.hpp"
 
 namespace projtrack::python {
 
-// Where init() or track() starts a new object: `obj` read as an inner point (x, y), a box
-// (x, y, width, height), a mask ((H, W) array, non-zero on the object) or, for Either, whichever
-// it is (a 2-D array: a mask; else by its count of numbers).
-struct Where {
-  enum Kind { Nowhere, Point, Box, Mask, Either };
-  pybind11::handle obj;
-  Kind kind = Nowhere;
-  bool restart = false;  // init(): the frames' time starts over at 0 too
-};
-
 class PyTracker {
  public:
-  explicit PyTracker(const TrackerOptions& o) : options_(o) {}
+  explicit PyTracker(const TrackerOptions& o) : options_(o), stream_(o.fps) {}
 
   // The library's frame: seeds from `where` when given, tracks `frame` at `t` seconds (None:
   // frames counted at the settings' fps); the silhouette's mask when `with_mask`.
@@ -40,20 +28,12 @@ class PyTracker {
   void reset();
 
   const TrackerOptions& options() const { return options_; }
-  long frames() const { return frames_; }
+  long frames() const { return stream_.frames(); }
 
  private:
-  // A frame of `width` × `height` with `channels` after the last one: the track follows a new size
-  // or a new kind of frame as the element's does new caps.
-  void reframe(int width, int height, int channels);
-
   TrackerOptions options_;
   Tracker tracker_;
-  FrameReader reader_;
-  int width_ = 0, height_ = 0, channels_ = 0;  // the last frame's (0: none yet)
-  std::mutex mutex_;                           // one frame at a time: track() runs without the GIL
-  // Frames tracked since the start or reset(); frames() may read it while a thread tracks.
-  std::atomic<long> frames_{0};
+  FrameStream stream_;
 };
 
 // The Tracker class in module `m`.

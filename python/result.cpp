@@ -21,6 +21,7 @@ py::tuple box(const Rect& b) { return py::make_tuple(b.x, b.y, b.width, b.height
 
 std::string describe(const Result& res) {
   std::string s = "<projtrack.Result " + std::string(status_name(res.r.status));
+  if (res.r.id != 0) s += " id=" + std::to_string(res.r.id);
   if (res.r.features.valid()) {
     const Features& f = res.r.features;
     s += (res.ok() ? "" : " (held)") + std::string(" centroid=(") +
@@ -50,11 +51,17 @@ void bind_result(py::module_& m) {
                ", depth=" + py::repr(py::float_(p.depth)).cast<std::string>() + ")";
       });
 
-  py::class_<Result>(m, "Result", "What the tracker made of one frame (Tracker.track).")
+  py::class_<Result>(m, "Result",
+                     "What the tracker made of one frame (Tracker.track), or of one object's "
+                     "(MultiTracker.track)")
+      .def_property_readonly(
+          "id", [](const Result& r) { return r.r.id; },
+          "the object's id in a MultiTracker (from 1); 0 from a Tracker")
       .def_property_readonly(
           "status", [](const Result& r) { return std::string(status_name(r.r.status)); },
           "'ok', 'reached-border', 'covers-frame' (measured), 'lost', "
-          "'searching', 'no-inner-point', 'invalid-parameters', ...")
+          "'occluded' (hidden behind another object), 'searching', 'no-inner-point', "
+          "'invalid-parameters', ...")
       .def_property_readonly("ok", &Result::ok,
                              "True when the features were measured on this frame")
       .def_property_readonly(

@@ -23,6 +23,12 @@ Settings python_defaults() {
   return s;
 }
 
+TrackerOptions multi_defaults() {
+  TrackerOptions o{python_defaults()};
+  o.max_objects = 8;
+  return o;
+}
+
 namespace {
 
 // The keywords' names before they were the element's: still taken, never given back.
@@ -110,9 +116,12 @@ bool set_setting(Settings& s, const std::string& key, const py::handle& v) {
 
 }  // namespace
 
-TrackerOptions options_from(const py::kwargs& kwargs) {
-  TrackerOptions o;
-  o.settings = python_defaults();
+TrackerOptions options_from(const py::kwargs& kwargs, const TrackerOptions& defaults,
+                            const char* cls) {
+  TrackerOptions o = defaults;
+  const auto too_few = [](int n) {
+    return n >= 1 ? std::string() : "max_objects = " + std::to_string(n) + " is not at least 1";
+  };
   std::set<std::string> given;
   for (const auto& [k, v] : kwargs) {
     std::string key = py::cast<std::string>(k);
@@ -123,12 +132,16 @@ TrackerOptions options_from(const py::kwargs& kwargs) {
       read(v, key, o.fps, [](double fps) {
         return fps > 0 ? std::string() : "fps = " + std::to_string(fps) + " is not positive";
       });
+    else if (key == "max_objects" && defaults.max_objects > 0)
+      read(v, key, o.max_objects, too_few);
     else if (!set_setting(o.settings, key, v))
-      throw py::type_error("Tracker() got an unexpected keyword argument '" +
+      throw py::type_error(std::string(cls) + "() got an unexpected keyword argument '" +
                            py::cast<std::string>(k) + "'");
   }
   if (std::string why = validate(o.settings); !why.empty()) throw py::value_error(why);
   if (!(o.fps > 0 && std::isfinite(o.fps))) throw py::value_error("fps must be a positive number");
+  if (std::string why = too_few(o.max_objects); defaults.max_objects > 0 && !why.empty())
+    throw py::value_error(why);
   return o;
 }
 
@@ -139,11 +152,11 @@ py::dict options_dict(const TrackerOptions& o) {
 #include "keyword_table.def"
 #undef PROJTRACK_KEYWORD
   d["fps"] = o.fps;
+  if (o.max_objects > 0) d["max_objects"] = o.max_objects;
   return d;
 }
 
-std::string keywords_doc() {
-  const TrackerOptions defaults{python_defaults()};
+std::string keywords_doc(const TrackerOptions& defaults) {
   std::ostringstream doc;
   for (const auto& [key, value] : options_dict(defaults))
     doc << "    " << std::string(py::str(key)) << "=" << std::string(py::repr(value)) << "\n";

@@ -48,15 +48,10 @@ void bind_tracker(py::module_& m) {
              const py::object& time, const py::object& mask) {
             // `mask`: True or False draws the result's mask or not; an array starts from it.
             const bool start_mask = !py::isinstance<py::bool_>(mask);
-            if (!point.is_none() + !box.is_none() + start_mask > 1)
-              throw py::value_error("give one of a point, a box or a mask array, not several");
-            const Where where{start_mask        ? mask
-                              : point.is_none() ? box
-                                                : point,
-                              start_mask         ? Where::Mask
-                              : !point.is_none() ? Where::Point
-                              : !box.is_none()   ? Where::Box
-                                                 : Where::Nowhere};
+            const Where where =
+                one_of({{given(point), Where::Point},
+                        {given(box), Where::Box},
+                        {start_mask ? py::handle(mask) : py::handle(), Where::Mask}});
             return t.track(frame, where, time, start_mask || mask.cast<bool>());
           },
           py::arg("frame"), py::kw_only(), py::arg("point") = py::none(),
