@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """The several-objects benchmark's driver: scenes composed from a folder in DAVIS layout
-(compose.py), every object followed together (one projtrack.MultiTracker) and alone
-(projtrack.Tracker) from its first true mask and from its box, beside OpenCV's CSRT, scored per
-object on frames 1 .. N-2 (the DAVIS 2016 protocol); then the cost run (timing.py).
+(compose.py), every object followed together (one projtrack.MultiTracker; and, to tell the shared
+budget's part, one with no work budget: `unlimited`) and alone (projtrack.Tracker) from its first
+true mask and from its box, beside OpenCV's CSRT, scored per object on frames 1 .. N-2 (the DAVIS
+2016 protocol); then the cost run (timing.py).
 
     run.py --data DIR --out OUT [--quick] [--mosaics N] [--frames N]
 
@@ -13,7 +14,8 @@ front of another's). Writes into OUT:
               status, ms (the run's call on that frame: for `together` the one call for all)
   runs.csv    one row per run and object: measured or not (and why), its frames, its start's ms
   cost.csv    the cost run (timing.py)
-  sheet/      the frames the contact sheet shows (JPEG) and the together run's masks on them (PNG)
+  sheet/      the frames the contact sheet shows (JPEG), the true masks and the together run's
+              masks on them (PNG)
   meta.json   the scenes, the settings, the module, the machine and the run's duration
 --quick: one mosaic of 8 frames, one crossing of 16, the cost run on 6 frames.
 """
@@ -30,7 +32,6 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "davis"))
 import dataset  # noqa: E402
-import measures  # noqa: E402
 
 import compose  # noqa: E402
 import runs  # noqa: E402
@@ -47,11 +48,11 @@ QUICK = {"mosaics": 1, "mosaic_frames": 8, "crossings": 1, "crossing_frames": 16
 
 
 def sheet_frames(scene, kind):
-    """The frames the contact sheet shows: 1, N/2 and N-2 of a mosaic; of a crossing 1, the one
-    where the back object shows least, the first where more than half of it shows again and
+    """The frames the contact sheet shows: 1, N/3, 2N/3 and N-2 of a mosaic; of a crossing 1, the
+    one where the back object shows least, the first where more than half of it shows again and
     N-2."""
     n = len(scene.frames)
-    chosen = {1, n // 2, n - 2} if kind == "mosaic" else {1, n - 2}
+    chosen = {1, n // 3, 2 * n // 3, n - 2} if kind == "mosaic" else {1, n - 2}
     if kind == "crossing":
         vis = [compose.visible_share(scene, 1, i) for i in range(n)]
         chosen.add(int(np.nanargmin(vis)))
@@ -71,7 +72,11 @@ def run_scene(scene, kind, out, rows, run_rows, log):
     for i in shown:
         cv2.imwrite(os.path.join(folder, f"{i:05d}.jpg"), scene.frames[i],
                     [cv2.IMWRITE_JPEG_QUALITY, 92])
+        for k, truth in enumerate(scene.truths):
+            cv2.imwrite(os.path.join(folder, f"{i:05d}-{k}-truth.png"),
+                        truth[i].astype(np.uint8) * 255)
     plan = [("together", s, None) for s in runs.STARTS]
+    plan += [("unlimited", s, None) for s in runs.STARTS]
     plan += [("alone", s, k) for s in runs.STARTS for k in range(len(scene.names))]
     plan += [("CSRT", "box", k) for k in range(len(scene.names))]
     for run, start, k in plan:
@@ -80,6 +85,8 @@ def run_scene(scene, kind, out, rows, run_rows, log):
         try:
             if run == "together":
                 gen = runs.together(scene, start, last)
+            elif run == "unlimited":
+                gen = runs.together(scene, start, last, runs.UNLIMITED)
             elif run == "alone":
                 gen = runs.alone(scene, k, start, last)
             else:

@@ -3,7 +3,9 @@ and run over frames 1 .. last, as a generator of (frame index, ms, {object: Pred
 first (0, init_ms, {}):
 
 - **together**: one `projtrack.MultiTracker` following every object of the scene, each added on
-  frame 0 from its first true mask or its box; ms is the one call for all of them.
+  frame 0 from its first true mask or its box, then frame 0 tracked (as Tracker.init does); ms is
+  the one call for all of them.
+- **unlimited**: the same with no work budget (`max_work=0`).
 - **alone**: one object followed by itself, `projtrack.Tracker` from the same start on the same
   frames (bench/davis/runners.py's run; a MultiTracker with one object follows it the same way:
   docs/tracker.md); one run per object.
@@ -24,6 +26,9 @@ import runners as davis_runners  # noqa: E402
 from runners import NotMeasured, Prediction  # noqa: E402,F401  (davis's)
 
 STARTS = ["mask", "box"]
+# The `unlimited` runs' settings: together with no work budget (max_work 0), to tell what the
+# shared budget takes from the objects from what following them together does.
+UNLIMITED = {"max_work": 0}
 MEASURED = {"ok", "reached-border"}  # the statuses that measured the object on the frame
 
 
@@ -66,10 +71,20 @@ def add_all(tracker, frame, first_masks, start):
     return ids, 1e3 * (time.perf_counter() - t0)
 
 
+def start_all(tracker, frame, first_masks, start):
+    """add_all(), then frame 0 tracked: add() only takes the start, the object is tracked from the
+    next frame given (the binding's add(): "give it `frame` again to start there"), as
+    Tracker.init(frame, where) starts on that frame. Returns ({index: id}, ms of both)."""
+    ids, add_ms = add_all(tracker, frame, first_masks, start)
+    t0 = time.perf_counter()
+    tracker.track(frame)
+    return ids, add_ms + 1e3 * (time.perf_counter() - t0)
+
+
 def together(scene, start, last, settings=None):
     """Every object of the scene in one MultiTracker (see the module's comment)."""
     t = multi_tracker(**(settings or {}))
-    ids, init_ms = add_all(t, scene.frames[0], [tr[0] for tr in scene.truths], start)
+    ids, init_ms = start_all(t, scene.frames[0], [tr[0] for tr in scene.truths], start)
     return _together_frames(t, ids, scene.frames, last, init_ms)
 
 

@@ -52,7 +52,7 @@ def run(scene, out, log=print):
     try:
         for c in COUNTS:
             t = runs.multi_tracker()
-            ids, _ = runs.add_all(t, scene.frames[0], firsts[:c], "mask")
+            ids, _ = runs.start_all(t, scene.frames[0], firsts[:c], "mask")
             multis[c] = (t, ids)
     except davis_runners.NotMeasured as e:
         multis, note = {}, str(e)
