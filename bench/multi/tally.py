@@ -121,20 +121,29 @@ def crossing_numbers(run, scene, start, name="together"):
 # ---- cost -----------------------------------------------------------------------------------------
 
 def cost_numbers(run):
-    """Per object count: the mean and median ms per frame of the MultiTracker and of as many
-    CSRTs (summed per frame), over the frames both were timed; and with the most objects the
-    frame's work (summed over objects) over the frame's budget."""
+    """Per object count: the mean and median ms per frame of the MultiTracker (and, prefixed
+    unlimited_, of the one with no budget) and of as many CSRTs (summed per frame); the statuses
+    of the MultiTracker's results and the share of them that measured the object (followed); the
+    frame's work (summed over objects) per frame."""
     by = collections.defaultdict(list)
     for r in run.cost:
         by[int(r["objects"])].append(r)
     out = {}
     for c, rows in sorted(by.items()):
-        ours = [float(r["projtrack_ms"]) for r in rows if r["projtrack_ms"] != ""]
         theirs = [float(r["csrt_ms"]) for r in rows if r["csrt_ms"] != ""]
-        work = [int(r["work"]) for r in rows if r["work"] != ""]
-        out[c] = {"ms": mean(ours) if ours else NAN, "ms_median": median(ours) if ours else NAN,
-                  "csrt_ms": mean(theirs) if theirs else NAN,
-                  "csrt_median": median(theirs) if theirs else NAN, "frames": len(rows),
-                  "work": work, "statuses": collections.Counter(
-                      s for r in rows for s in r["statuses"].split())}
+        out[c] = {"csrt_ms": mean(theirs) if theirs else NAN,
+                  "csrt_median": median(theirs) if theirs else NAN, "frames": len(rows)}
+        for prefix in ("", "unlimited_"):
+            ours = [float(r[prefix + "projtrack_ms"]) for r in rows
+                    if r.get(prefix + "projtrack_ms", "") != ""]
+            statuses = collections.Counter(s for r in rows
+                                           for s in r.get(prefix + "statuses", "").split())
+            out[c][prefix + "ms"] = mean(ours) if ours else NAN
+            out[c][prefix + "ms_median"] = median(ours) if ours else NAN
+            out[c][prefix + "work"] = [int(r[prefix + "work"]) for r in rows
+                                       if r.get(prefix + "work", "") != ""]
+            out[c][prefix + "statuses"] = statuses
+            total = sum(statuses.values())
+            out[c][prefix + "followed"] = (sum(statuses[s] for s in MEASURED) / total
+                                           if total else NAN)
     return out

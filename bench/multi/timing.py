@@ -1,12 +1,13 @@
 """The several-objects benchmark's cost run: on one 4×2 mosaic of eight sequences (each at half
-size), a MultiTracker following the first 1, 2, 4 and 8 of its objects and as many OpenCV CSRT
-trackers, all on the same frames, side by side: on every frame each MultiTracker's call is timed,
-then its CSRTs' calls (summed), one count after the other, so that whatever else loads the machine
-loads both alike. With 8 objects, the frame's work (the objects' TrackResult.work summed) against
-the frame's budget.
+size), a MultiTracker following the first 1, 2, 4 and 8 of its objects (with the default settings,
+and one with no work budget, max_work=0) and as many OpenCV CSRT trackers, all on the same frames,
+side by side: on every frame each MultiTracker's call is timed, then its CSRTs' calls (summed), one
+count after the other, so that whatever else loads the machine loads both alike. With 8 objects,
+the frame's work (the objects' TrackResult.work summed) against the frame's budget.
 
-Writes cost.csv: one row per frame and count (objects, projtrack_ms, csrt_ms, work, work_limits
-(the objects' shares summed), statuses).
+Writes cost.csv: one row per frame and count (objects; projtrack_ms, work, work_limits (the
+objects' shares summed), statuses, and the same prefixed unlimited_ for the one with no budget;
+csrt_ms).
 """
 import csv
 import os
@@ -41,6 +42,23 @@ def tracker_limit(frames, first_mask):
     return getattr(t.track(frames[1]), "work_limit", None)
 
 
+def timed(multi, frame, prefix):
+    """One MultiTracker's call on `frame`, timed: the cost.csv fields (named with `prefix`)."""
+    row = {prefix + k: "" for k in ("projtrack_ms", "work", "work_limits", "statuses")}
+    if multi is None:
+        return row
+    t, ids = multi
+    t0 = time.perf_counter()
+    res = t.track(frame)
+    row[prefix + "projtrack_ms"] = f"{1e3 * (time.perf_counter() - t0):.3f}"
+    rs = [res[oid] for oid in ids.values() if oid in res]
+    if rs and all(hasattr(r, "work") for r in rs):
+        row[prefix + "work"] = sum(int(r.work) for r in rs)
+        row[prefix + "work_limits"] = sum(int(r.work_limit) for r in rs)
+    row[prefix + "statuses"] = " ".join(r.status for r in rs)
+    return row
+
+
 def run(scene, out, log=print):
     """The cost run on `scene` (a mosaic of at least 8 objects) into out/cost.csv; returns a
     dict for meta.json (what was and was not measured)."""
@@ -51,9 +69,10 @@ def run(scene, out, log=print):
     multis, note = {}, ""
     try:
         for c in COUNTS:
-            t = runs.multi_tracker()
-            ids, _ = runs.start_all(t, scene.frames[0], firsts[:c], "mask")
-            multis[c] = (t, ids)
+            for budget, settings in (("default", {}), ("unlimited", runs.UNLIMITED)):
+                t = runs.multi_tracker(**settings)
+                ids, _ = runs.start_all(t, scene.frames[0], firsts[:c], "mask")
+                multis[(c, budget)] = (t, ids)
     except davis_runners.NotMeasured as e:
         multis, note = {}, str(e)
         log(f"  cost: projtrack not measured: {e}")
@@ -78,18 +97,9 @@ def run(scene, out, log=print):
     for i in range(1, n):
         frame = scene.frames[i]
         for c in COUNTS:
-            row = {"frame": i, "objects": c, "projtrack_ms": "", "csrt_ms": "", "work": "",
-                   "work_limits": "", "statuses": ""}
-            if c in multis:
-                t, ids = multis[c]
-                t0 = time.perf_counter()
-                res = t.track(frame)
-                row["projtrack_ms"] = f"{1e3 * (time.perf_counter() - t0):.3f}"
-                rs = [res[oid] for oid in ids.values() if oid in res]
-                if rs and all(hasattr(r, "work") for r in rs):
-                    row["work"] = sum(int(r.work) for r in rs)
-                    row["work_limits"] = sum(int(r.work_limit) for r in rs)
-                row["statuses"] = " ".join(r.status for r in rs)
+            row = {"frame": i, "objects": c}
+            for budget, prefix in (("default", ""), ("unlimited", "unlimited_")):
+                row.update(timed(multis.get((c, budget)), frame, prefix))
             t0 = time.perf_counter()
             for tr in csrts[c]:
                 tr.update(frame)
