@@ -82,11 +82,11 @@ front of another, and what it costs beside as many OpenCV CSRT trackers. The sce
 from `{os.path.basename(m['data'])}/` (DAVIS 2016, ten sequences with a true mask on every frame;
 bench/multi/compose.py):
 
-- **Mosaics**: {len(mos)} mosaics of 2×2 sequences ({', '.join(sizes) or MISSING} px), each
-  sequence at half size in its quarter with its true masks resized alike; the ten sequences are
-  cycled in name order, four to a mosaic, so each appears {_appearances(mos)}; {limit}
-  ({frames} frames in all).
-- **Crossings**: {len(cro)} composites in which one sequence's object, cut out of its frames by its
+- **Mosaics**: {plural(len(mos), 'mosaic')} of 2×2 sequences ({', '.join(sizes) or MISSING} px),
+  each sequence at half size in its quarter with its true masks resized alike; the sequences are
+  cycled in name order, four to a mosaic, so that each of the {len({o for s in mos for o in
+  s['objects']})} in them appears {_appearances(mos)}; {limit} ({frames} frames in all).
+- **Crossings**: {plural(len(cro), 'composite')} in which one sequence's object, cut out of its frames by its
   true mask (and scaled so that it is 1.2× as high as the other object or as wide, within
   0.3–1.25×), is pasted onto another sequence's frames and swept sideways across that sequence's
   object — clear of it on frame 0, over it, out the other side some frames before the end — with
@@ -120,6 +120,10 @@ run (one mosaic of 8 frames, one crossing of 16, the cost run on 6) into the bui
 untouched. The whole run took {m['seconds']:.0f} s (the cost run {fmt_num(cost.get('seconds'), 0)} s
 of it).
 """
+
+
+def plural(n, word):
+    return f"{n} {word}" + ("" if n == 1 else "s")
 
 
 def _appearances(mosaics):
@@ -280,6 +284,20 @@ def crossing_section(run):
                 f"{fmt_pct(c['on_front_max'])} | {c['out'] if c['out'] is not None else DASH} | "
                 f"{found} |")
     lines += _not_measured(run, "crossing")
+    lines += ["", "What the back object was reported while hidden and once out (the statuses' "
+              "shares of those frames):", "",
+              "| front over back | start | run | on its hidden frames | from coming out to N-2 |",
+              "|---|---|---|---|---|"]
+    for s in cro:
+        for start, name in [(st, r) for st, _ in STARTS for r in ("together", "unlimited")]:
+            status = run.values(s["name"], name, start, 1, "status")
+            c = T.crossing_numbers(run, s["name"], start, name)
+            hidden = {i: status[i] for i in c["hidden"] if i in status}
+            after = {i: v for i, v in status.items() if c["out"] is not None and i >= c["out"]}
+            label = "together" if name == "together" else "together, no budget"
+            lines.append(f"| {s['name']} | {start} | {label} | "
+                         f"{(statuses(hidden) if hidden else DASH) if status else MISSING} | "
+                         f"{(statuses(after) if after else DASH) if status else MISSING} |")
     lines += ["", "| target | measured | verdict |", "|---|---|---|"]
     for start, words in STARTS:
         rows = per[start]
