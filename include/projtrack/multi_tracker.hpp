@@ -77,6 +77,9 @@ class MultiTracker {
   std::vector<TrackResult> track(const ColorView& frame, const EdgeParams& edge_params, double t,
                                  Method m, const Params& params, const TrackerParams& tp,
                                  Trace* trace = nullptr);
+  std::vector<TrackResult> track(const ImageView& gray, const EdgeParams& edge_params, double t,
+                                 Method m, const Params& params, const TrackerParams& tp,
+                                 Trace* trace = nullptr);
 
  private:
   struct Impl;

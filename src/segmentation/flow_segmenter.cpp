@@ -227,7 +227,16 @@ constexpr std::uint64_t kStartCost = 12;
 std::uint64_t FlowSegmenter::follow_cost(const WorkImages& img, const FlowModelParams& p) const {
   if (last_.empty()) return 0;
   const int level = level_for(p);
-  const cv::Rect part = motion_needed(p, level) & cv::Rect({0, 0}, img.size());
+  return cost_at(motion_needed(p, level) & cv::Rect({0, 0}, img.size()), level);
+}
+
+std::uint64_t FlowSegmenter::follow_cost(const FlowModelParams& p) const {
+  if (last_.empty()) return 0;
+  const int level = level_for(p);
+  return cost_at(motion_needed(p, level), level);
+}
+
+std::uint64_t FlowSegmenter::cost_at(const cv::Rect& part, int level) {
   const auto pixels = static_cast<std::uint64_t>(std::max(part.area(), 0));
   return pixels * (kMotionCost[std::clamp(level, 0, DenseFlow::kMaxLevel)] + kCutCost);
 }
@@ -235,7 +244,8 @@ std::uint64_t FlowSegmenter::follow_cost(const WorkImages& img, const FlowModelP
 int FlowSegmenter::level_for(const FlowModelParams& p) const {
   int level = flow_level(area_, flow_level_, p.flow_span);
   while (level < DenseFlow::kMaxLevel &&
-         (motion_needed(p, level).area() >> (2 * level)) > kMostFlowPixels)
+         ((motion_needed(p, level).area() >> (2 * level)) > kMostFlowPixels ||
+          cost_at(motion_needed(p, level), level) > affordable_))
     ++level;
   return level;
 }

@@ -41,6 +41,11 @@ class FlowSegmenter {
   // prior, evidence, cut and learning within that part. Changes nothing: a frame whose budget
   // cannot pay for it is not followed, and the object stays as it was.
   std::uint64_t follow_cost(const WorkImages& img, const FlowModelParams& p) const;
+  // The same at the segmenter's scale, before its work images are built.
+  std::uint64_t follow_cost(const FlowModelParams& p) const;
+  // The next follow() may cost at most `units`: its motion is read at a coarser level when the
+  // usual one would cost more (several objects share a frame's budget), rather than not at all.
+  void afford(std::uint64_t units) { affordable_ = units; }
   // What start() on `img` costs, work units.
   static std::uint64_t start_cost(const WorkImages& img);
   // The object on the next frame: its cut, silhouette(). False when nothing of it is left (or
@@ -95,6 +100,8 @@ class FlowSegmenter {
   // The pyramid level the next frame's motion is read at: the coarsest at which the object still
   // spans FlowModelParams::flow_span, coarser where the part read is wide for it.
   int level_for(const FlowModelParams& p) const;
+  // What a follow() that reads `part` (work px) at pyramid level `level` costs, work units.
+  static std::uint64_t cost_at(const cv::Rect& part, int level);
   // The part of a frame of `size` (work px) a frame reads around the silhouette's `box` of `area`
   // work px, for an object that last moved `moved` work px, its motion read at `level`.
   static cv::Rect part_read(const cv::Rect& box, double area, double moved, int level,
@@ -127,6 +134,7 @@ class FlowSegmenter {
 
   DenseFlow flow_;
   int flow_level_ = DenseFlow::kPresetLevel;  // the flow's pyramid level for this object
+  std::uint64_t affordable_ = UINT64_MAX;     // afford()
   ColourMixture colours_;
   LocalColours local_colours_;  // learned only from an outlined first silhouette, then followed
   int scale_ = 1;

@@ -23,8 +23,13 @@ std::uint64_t share_of(std::uint64_t limit, std::uint64_t spent, std::size_t obj
 std::vector<std::size_t> MultiTracker::Impl::look_order() const {
   std::vector<std::size_t> order(objects.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_partition(order.begin(), order.end(),
-                        [&](std::size_t i) { return objects[i].track.model->tracking(); });
+  // Each object takes at most an equal share of what those before it left: in the order of what
+  // they cost on the last frame, the cheap ones leave what they do not need to the dear ones.
+  const auto cost = [&](std::size_t i) {
+    return objects[i].track.model->tracking() ? objects[i].last_work : WorkBudget::kUnlimited;
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cost(a) < cost(b); });
   return order;
 }
 
@@ -179,6 +184,7 @@ std::vector<TrackResult> MultiTracker::Impl::track(const ColorView& frame, EdgeS
     r.id = objects[i].id;
     r.inner_point = objects[i].track.state.track().inner;
     r.work = shares[i].spent();
+    objects[i].last_work = r.work;
     r.work_limit = shares[i].limit();
     r.gesture = objects[i].track.state.pointer.take_gesture();
   }

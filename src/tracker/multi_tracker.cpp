@@ -146,6 +146,12 @@ std::vector<TrackResult> MultiTracker::track(const ColorView& frame, const EdgeP
   return impl_->track(frame, edges, FrameInput{t, m, params, tp, trace});
 }
 
+std::vector<TrackResult> MultiTracker::track(const ImageView& gray, const EdgeParams& edge_params,
+                                             double t, Method m, const Params& params,
+                                             const TrackerParams& tp, Trace* trace) {
+  return track(ColorView{gray, {}, {}}, edge_params, t, m, params, tp, trace);
+}
+
 std::vector<TrackResult> MultiTracker::track(const ColorView& frame, double t, const Settings& s,
                                              Trace* trace) {
   return track(frame, s.edges, t, s.method, s.params, s.tracker, trace);

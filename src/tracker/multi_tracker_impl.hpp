@@ -24,6 +24,7 @@ struct MultiTracker::Impl {
     // met that object: hidden is more than half of that area covered.
     bool met = false;
     double area_before_met = 0;
+    std::uint64_t last_work = 0;  // the work it did on the last frame
   };
   std::vector<Object> objects;  // in the order they were added
   FrameWork work;
@@ -43,8 +44,10 @@ struct MultiTracker::Impl {
   // One frame (multi_frame.cpp): its checks, then each object's look, the pixels two objects
   // claim given to the one in front, and each object's verdict.
   std::vector<TrackResult> track(const ColorView& frame, EdgeSource& edges, const FrameInput& in);
-  // The order objects look at a frame in: followed objects first, then starts (a start costs
-  // most, and takes what the others left of the frame's budget).
+  // The order objects look at a frame in, each within an equal share of what the objects before
+  // it left of the frame's budget: followed objects by what they cost on the last frame, the
+  // cheapest first, then starts (a start costs most): the frame's budget is shared max-min
+  // fairly, as water fills vessels.
   std::vector<std::size_t> look_order() const;
   // Where two looks' silhouettes meet, the pixels go to the object whose model explains them
   // better (the one in front; on a tie, the one added first); the other gives them up. The id of

@@ -13,6 +13,7 @@
 #include "fuzz_input.hpp"
 #include "projtrack/edge_detection.hpp"
 #include "projtrack/estimator.hpp"
+#include "projtrack/multi_tracker.hpp"
 #include "projtrack/tracker.hpp"
 #include "projtrack/work_budget.hpp"
 
@@ -62,6 +63,42 @@ void check_on_silhouette(const Tracker& tracker, const Features& f, int w, int h
   if (tracker.silhouette(mask.data(), w, h, w))
     check(mask[static_cast<std::size_t>(f.inner_point.y) * w + f.inner_point.x] != 0,
           "inner point on the silhouette");
+}
+
+// Several objects on the same frames: starts anywhere (refused with a reason, or an id never seen
+// before), removals of any id, and frames whose results are one per object, in ids() order, with
+// finite features inside the frame, never more work than the frame's bound.
+void fuzz_several_objects(Input& in, const ImageView& frame, const EdgeParams& ep, const Params& p,
+                          const TrackerParams& tp) {
+  const int w = frame.width, h = frame.height;
+  MultiTracker objects(static_cast<std::size_t>(in.in(0, 4)));
+  int last_id = 0;
+  for (int step = 0; step < 6; ++step) {
+    const int what = in.in(0, 3);
+    Added a;
+    if (what == 0) a = objects.add_point({in.in(-5, 60), in.in(-5, 60)}, w, h);
+    if (what == 1)
+      a = objects.add_box({in.in(-5, 60), in.in(-5, 60), in.in(-2, 30), in.in(-2, 30)}, w, h);
+    if (what == 2) objects.remove(in.in(-1, 6));
+    if (what <= 1) check(a ? a.id > last_id && a.why.empty() : !a.why.empty(), "a new id or why");
+    if (a) last_id = a.id;
+    const std::vector<TrackResult> rs =
+        objects.track(frame, ep, step / 30.0, any_method(in), p, tp);
+    check(rs.size() == objects.size(), "one result per object");
+    std::uint64_t work = 0;
+    for (std::size_t i = 0; i < rs.size(); ++i) {
+      check(rs[i].id == objects.ids()[i], "results in ids() order");
+      work += rs[i].work;
+      if (!has_features(rs[i].status)) continue;
+      const Features& f = rs[i].features;
+      check(std::isfinite(f.centroid.x) && std::isfinite(f.centroid.y) && std::isfinite(f.area),
+            "finite features of each object");
+      check(!f.bbox.empty() && clip_to_frame(f.bbox, w, h) == f.bbox, "each object inside");
+    }
+    if (tp.max_work > 0)
+      check(work <= frame_work_limit(w, h, tp) + rs.size() * overshoot_bound(w, h),
+            "several objects within one frame's budget");
+  }
 }
 
 }  // namespace
@@ -158,5 +195,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       check(std::isfinite(r.pose.x) && std::isfinite(r.pose.y) && std::isfinite(r.pose.depth),
             "finite pose");
   }
+  fuzz_several_objects(in, edges, ep, p, tp);
   return 0;
 }

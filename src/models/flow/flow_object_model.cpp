@@ -16,6 +16,9 @@ std::unique_ptr<ObjectModel> make_object_model<ObjectModelKind::Flow>() {
 
 namespace {
 
+// The coarsest scale an object is followed at to fit the frame's budget.
+constexpr int kMostScale = 8;
+
 const WorkImages* work_images(FrameEvidence& ev) {
   const double pixels = static_cast<double>(ev.width()) * ev.height();
   return ev.images(work_scale(pixels, ev.tp.flow.work_pixels));
@@ -105,8 +108,16 @@ Observation FlowObjectModel::follow(FrameEvidence& ev, const Track& track) {
     Observation o;
     if (found_again(ev, track, o)) return o;
   }
-  follow_scale(ev);
+  // A tenth of what is left stays for the estimate on the silhouette.
+  const std::uint64_t affordable = ev.budget.left() - ev.budget.left() / 10;
+  follow_scale(ev, affordable);
+  segmenter_.afford(affordable);
   const WorkImages* img = ev.images(scale_, segmenter_.images_needed(ev.tp.flow));
+    fprintf(stderr, "left %llu aff %llu spent %llu cost %llu est %llu scale %d\n",
+            (unsigned long long)ev.budget.left(), (unsigned long long)affordable,
+            (unsigned long long)ev.budget.spent(),
+            img ? (unsigned long long)segmenter_.follow_cost(*img, ev.tp.flow) : 0ull,
+            (unsigned long long)segmenter_.follow_cost(ev.tp.flow), scale_);
   if (!img || !pay(ev.budget, segmenter_.follow_cost(*img, ev.tp.flow)))
     return Observation::stopped();
   if (!segmenter_.follow(*img, ev.tp.flow))
@@ -126,14 +137,21 @@ bool FlowObjectModel::found_again(FrameEvidence& ev, const Track& track, Observa
   return o.kind == Observation::Kind::Silhouette;
 }
 
-void FlowObjectModel::follow_scale(const FrameEvidence& ev) {
+void FlowObjectModel::follow_scale(const FrameEvidence& ev, std::uint64_t affordable) {
   // An object that grew or shrank to half or twice its area at its scale is followed at the scale
   // its size asks for now (hysteresis: no switch back and forth for an object near the limit).
   object_pixels_ = ev.tp.flow.object_pixels;
   const double area = segmenter_.area() * scale_ * scale_;
-  const int scale = object_scale(area, object_pixels_);
+  int scale = object_scale(area, object_pixels_);
   const double ratio = static_cast<double>(scale) / scale_;
-  if (ratio * ratio < 2 && ratio * ratio > 0.5) return;
+  if (ratio * ratio < 2 && ratio * ratio > 0.5) scale = scale_;
+  // A coarser one while the budget cannot pay for this one (several objects share a frame's
+  // budget): a follow costs as many times less as it reads fewer work pixels.
+  const double cost = static_cast<double>(segmenter_.follow_cost(ev.tp.flow));
+  while (scale < kMostScale &&
+         cost * scale_ * scale_ > static_cast<double>(affordable) * scale * scale)
+    ++scale;
+  if (scale == scale_) return;
   const double r = static_cast<double>(scale_) / scale;
   segmenter_.resample(r, r, work_size(ev.width(), ev.height(), scale), scale);
   scale_ = scale;

@@ -50,8 +50,9 @@ class FlowObjectModel final : public ObjectModel {
   // After a new size: the object found again by its colours near where it was and begun there,
   // into `o` (false, following on from the resampled silhouette, when it is not found).
   bool found_again(FrameEvidence& ev, const Track& track, Observation& o);
-  // The object followed at the scale its size asks for (FlowModelParams::object_pixels).
-  void follow_scale(const FrameEvidence& ev);
+  // The object followed at the scale its size asks for (FlowModelParams::object_pixels), or a
+  // coarser one at which its follow costs at most `affordable` work units.
+  void follow_scale(const FrameEvidence& ev, std::uint64_t affordable);
   // A start nobody pointed at (flow_search.cpp), into inside_ (`whole`'s size): by
   // TrackerParams::acquisition, the object at the frame's centre, or the object lost before where
   // its colours are near where it was lost and something moves, else the object that moves apart
