@@ -461,6 +461,7 @@ def run_section(run):
                                       for n, x in enumerate(run.of_kind("mosaic"))),
             "- crossings: " + "; ".join(f"{x['name']} ({x['frames']} frames)"
                                         for x in run.of_kind("crossing")),
+            f"- the repository's commit: {m.get('commit') or MISSING}",
             f"- projtrack module {m['module']['version']} "
             f"(`{os.path.basename(m['module']['file'])}`, MultiTracker: "
             f"{'yes' if m['module'].get('multi_tracker') else 'no'}), default settings: "

@@ -24,6 +24,7 @@ import csv
 import json
 import os
 import platform
+import subprocess
 import sys
 import time
 
@@ -128,6 +129,20 @@ def module_info():
                          for k, v in t.settings.items()}}
 
 
+def source_commit():
+    """The repository's commit the run measured ('' outside a git checkout), '+changes' when its
+    tracked files differed from it."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    try:
+        head = subprocess.run(["git", "-C", here, "rev-parse", "--short=12", "HEAD"],
+                              capture_output=True, text=True, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", here, "status", "--porcelain", "--untracked-files=no"],
+                               capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+    return head + (" +changes" if dirty else "")
+
+
 def write_csv(path, rows):
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()) if rows else ["scene"])
@@ -193,6 +208,7 @@ def main():
             "mosaic_frame_limit": mosaic_frames, "cost": cost, "module": info,
             "measured_frames": "1 .. N-2", "opencv": cv2.__version__,
             "opencv_threads": cv2.getNumThreads(), "python": platform.python_version(),
+            "commit": source_commit(),
             "machine": {"cpu": platform.processor() or platform.machine(),
                         "cores": os.cpu_count(), "system": platform.platform(),
                         "load": [round(load_start[0], 1), round(os.getloadavg()[0], 1)]},
