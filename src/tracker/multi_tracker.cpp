@@ -56,6 +56,7 @@ std::string MultiTracker::Impl::why_not_new(Point2i p, const Rect* box, int w, i
 
 Added MultiTracker::Impl::add(Object&& o) {
   o.id = next_id++;
+  o.track.keeps_looking = true;
   objects.push_back(std::move(o));
   return Added{objects.back().id, {}};
 }

@@ -88,6 +88,14 @@ void ObjectTrack::refuse(std::string why, const TrackerParams& tp, TrackResult& 
   report_last(state, r);
   state.refuse();
   const AfterRefusal next = after_refusal(state.track(), tp, drop_now);
+  if (next.drop && keeps_looking) {
+    // Not dropped for another object: looked for again from where it was (or from the user's
+    // start, never taken), its model keeping what it knows of it.
+    r.detail += "; looked for again where it was last seen";
+    model->forget(Forget::Position);
+    state.lose();
+    return;
+  }
   r.detail += next.note;
   if (!next.drop) return;
   // A track accepted on one frame only was never an object: its model is not searched for.

@@ -42,6 +42,9 @@ class ObjectTrack {
   TrackerState state;
   ObjectModelKind kind = TrackerParams{}.model;
   std::unique_ptr<ObjectModel> model = make_object_model(kind);
+  // Refusals never drop the track (a MultiTracker's object, which only the user ends): once the
+  // policy would drop it, its model looks for it again where it was last seen.
+  bool keeps_looking = false;
 
   // The model of `k`, with the track's user start kept when it is another than the last frame's.
   void use_model(ObjectModelKind k);

@@ -38,6 +38,12 @@ class TrackerState {
               const TrackerParams& tp);
   // One more refused frame: the last accepted estimate stays; a gesture in progress does not.
   void refuse();
+  // The object is lost, but the track goes on (its model looks for it again where it was): the
+  // refusals in a row count afresh, a press held is released; its last estimate and start stay.
+  void lose() {
+    track_.refused_in_a_row = 0;
+    pointer.end();
+  }
   // The object is hidden by another on this frame: the last accepted estimate stays, a gesture in
   // progress does not, and the frame does not count towards dropping the track.
   void hide() { pointer.refuse(); }

@@ -45,7 +45,7 @@ Truth truth_of(cv::Mat inside) {
   return t;
 }
 
-TwoObjects two_objects(int i, int dy, double step = 3) {
+TwoObjects two_objects(int i, int dy, double step = 3, bool orange_shown = true) {
   cv::Mat bgr(kH, kW, CV_8UC3);
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
@@ -60,6 +60,7 @@ TwoObjects two_objects(int i, int dy, double step = 3) {
   cv::Mat inside[2];
   for (int k : {1, 0}) {  // the blue one first: the orange one in front
     inside[k] = cv::Mat::zeros(kH, kW, CV_8U);
+    if (k == 0 && !orange_shown) continue;
     cv::ellipse(inside[k], centres[k], axes, 0, 0, 360, 255, cv::FILLED);
     bgr.setTo(colours[k], inside[k]);
   }
@@ -177,6 +178,31 @@ TEST(MultiTracker, TheObjectBehindIsOccludedAndFoundAgain) {
   ASSERT_GE(out_since, 0);
   EXPECT_GE(found_after, 0) << "found again";
   EXPECT_LE(found_after, 10);
+}
+
+// An object gone for longer than the tracker's patience is not dropped for another: it is lost
+// (no features of those frames), looked for where it was, and found again with its id.
+TEST(MultiTracker, AnObjectGoneAwhileIsFoundAgainWithItsId) {
+  MultiTracker mt;
+  const TwoObjects first = two_objects(0, 60, 0);
+  const int orange = mt.add_box(first.object[0].box, kW, kH).id;
+  ASSERT_TRUE(mt.add_box(first.object[1].box, kW, kH));
+  int found_after = -1;
+  for (int i = 0; i < 40; ++i) {
+    const bool gone = i >= 5 && i < 25;  // four times the default patience
+    const TwoObjects f = two_objects(i, 60, 0, !gone);
+    const std::vector<TrackResult> rs = mt.track(f.view(), i / 30.0, Settings{});
+    const TrackResult* r = result_of(rs, orange);
+    ASSERT_NE(r, nullptr) << i;
+    if (gone) {
+      EXPECT_EQ(r->status, TrackStatus::Lost) << i << ": " << r->detail;
+    } else if (i >= 25 && found_after < 0 && has_features(r->status)) {
+      found_after = i - 25;
+      EXPECT_TRUE(near(r->features, f.object[0])) << i;
+    }
+  }
+  EXPECT_GE(found_after, 0) << "found again";
+  EXPECT_LE(found_after, 5);
 }
 
 TEST(MultiTracker, OneObjectIsFollowedAsByATracker) {

@@ -113,11 +113,6 @@ Observation FlowObjectModel::follow(FrameEvidence& ev, const Track& track) {
   follow_scale(ev, affordable);
   segmenter_.afford(affordable);
   const WorkImages* img = ev.images(scale_, segmenter_.images_needed(ev.tp.flow));
-    fprintf(stderr, "left %llu aff %llu spent %llu cost %llu est %llu scale %d\n",
-            (unsigned long long)ev.budget.left(), (unsigned long long)affordable,
-            (unsigned long long)ev.budget.spent(),
-            img ? (unsigned long long)segmenter_.follow_cost(*img, ev.tp.flow) : 0ull,
-            (unsigned long long)segmenter_.follow_cost(ev.tp.flow), scale_);
   if (!img || !pay(ev.budget, segmenter_.follow_cost(*img, ev.tp.flow)))
     return Observation::stopped();
   if (!segmenter_.follow(*img, ev.tp.flow))
