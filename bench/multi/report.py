@@ -230,16 +230,24 @@ def statuses(v):
 
 
 def _not_measured(run, kind):
-    notes = []
-    for run_name in ("together", "alone", "CSRT"):
-        for start in ("mask", "box"):
-            scenes = [s["name"] for s in run.of_kind(kind)]
-            for (sc, r, st, _), row in run.runs.items():
-                if sc in scenes and (r, st) == (run_name, start) and row["measured"] != "1":
-                    notes.append(f"{run_name} from the {start}: {row['note']}")
-                    break
-    notes = list(dict.fromkeys(notes))
-    return ["", "Not measured: " + "; ".join(notes) + "."] if notes else []
+    """Why runs were not measured, and the runs whose tracker raised (their frames from there on
+    are misses, status `error`)."""
+    scenes = [s["name"] for s in run.of_kind(kind)]
+    notes, raised = [], []
+    for (sc, r, st, _), row in run.runs.items():
+        if sc not in scenes or not row["note"]:
+            continue
+        if row["measured"] != "1":
+            notes.append(f"{r} from the {st}: {row['note']}")
+        else:
+            raised.append(f"{sc}, {r} from the {st}: {row['note']}")
+    out = []
+    if notes:
+        out += ["", "Not measured: " + "; ".join(dict.fromkeys(notes)) + "."]
+    if raised:
+        out += ["", "The tracker raised, its frames from there on misses (status `error`): "
+                + "; ".join(dict.fromkeys(raised)) + "."]
+    return out
 
 
 # ---- crossings ------------------------------------------------------------------------------------
@@ -365,6 +373,9 @@ def cost_section(run):
         lines.append(f"| {k} | " + " | ".join(cells) + " |")
     if info.get("projtrack_note"):
         lines += ["", f"projtrack not measured: {info['projtrack_note']}."]
+    if info.get("errors"):
+        lines += ["", "The MultiTracker raised, and was called no more (its objects not followed "
+                  "from there on): " + "; ".join(info["errors"]) + "."]
     lines += ["", "The statuses of the default MultiTracker's results: " + "; ".join(
         f"{k} object{'s' if k > 1 else ''}: {counted(get(k, 'statuses') or {})}" for k in counts)
         + ".", ""]

@@ -100,18 +100,22 @@ def run_scene(scene, kind, out, rows, run_rows, log):
                                      init_ms="", note=str(e)))
             continue
         js = {o: [] for o in objects}
-        for i, ms, preds in gen:
+        failure = []
+        for i, ms, preds in runs.guarded(gen, objects, scene.frames[0].shape[:2], last, failure):
             for o, p in preds.items():
                 r = scoring.frame_row(scene, o, i, p, box_tracker=(run == "CSRT"))
                 js[o].append(float(r["j"]))
                 rows.append(dict(base, object=o, name=scene.names[o], frame=i,
-                                 ms=f"{ms:.3f}", **r))
+                                 ms="" if np.isnan(ms) else f"{ms:.3f}", **r))
                 if run == "together" and start == "mask" and i in shown:
                     cv2.imwrite(os.path.join(folder, f"{i:05d}-{o}.png"),
                                 p.mask.astype(np.uint8) * 255)
         for o in objects:
             run_rows.append(dict(base, object=o, name=scene.names[o], measured=1,
-                                 frames=len(js[o]), init_ms=f"{init_ms:.3f}", note=""))
+                                 frames=len(js[o]), init_ms=f"{init_ms:.3f}",
+                                 note=failure[0] if failure else ""))
+        if failure:
+            log(f"  {run:8s} {start:4s} {failure[0]}")
         mean_j = "  ".join(f"{scene.names[o]} {100 * np.mean(js[o]):.1f}" for o in objects)
         log(f"  {run:8s} {start:4s} J {mean_j}")
 

@@ -11,9 +11,11 @@ first (0, init_ms, {}):
   docs/tracker.md); one run per object.
 - **CSRT**: OpenCV's CSRT from the object's box (bench/davis/runners.py's run), one per object.
 
-A run that cannot start raises davis's runners.NotMeasured (the module has no MultiTracker yet,
+A run whose tracker raises on a frame ends there: guarded() gives its frames left as misses
+(status 'error') and keeps the message. A run that cannot start raises davis's runners.NotMeasured (the module has no MultiTracker yet,
 or refused a start): the report then reads "not measured", never a zero.
 """
+import math
 import os
 import sys
 import time
@@ -101,6 +103,22 @@ def _together_frames(t, ids, frames, last, init_ms):
             preds[k] = prediction(r, shape, ms) if r is not None else \
                 Prediction(np.zeros(shape, bool), None, 0.0, None, ms, "missing")
         yield i, ms, preds
+
+
+def guarded(gen, objects, shape, last, failure):
+    """The frames of a started run (`gen` after its first yield) as they come; when the tracker
+    raises, its message goes into `failure` and every frame left yields an empty prediction with
+    status 'error' for each of `objects` (a miss, as a frame the tracker did not follow)."""
+    i = 0
+    try:
+        for i, ms, preds in gen:
+            yield i, ms, preds
+        return
+    except Exception as e:  # noqa: BLE001  (whatever the module raises ends the run there)
+        failure.append(f"raised on frame {i + 1}: {type(e).__name__}: {str(e).strip()}")
+    for f in range(i + 1, last + 1):
+        yield f, math.nan, {o: Prediction(np.zeros(shape, bool), None, 0.0, None, math.nan,
+                                          "error") for o in objects}
 
 
 def alone(scene, k, start, last, model=None):

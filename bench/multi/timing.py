@@ -47,9 +47,18 @@ def timed(multi, frame, prefix):
     row = {prefix + k: "" for k in ("projtrack_ms", "work", "work_limits", "statuses")}
     if multi is None:
         return row
-    t, ids = multi
+    t, ids, failure = multi
+    if failure:  # it raised on an earlier frame: no more calls, its objects not followed
+        row[prefix + "statuses"] = " ".join("error" for _ in ids)
+        return row
     t0 = time.perf_counter()
-    res = t.track(frame)
+    try:
+        res = t.track(frame)
+    except Exception as e:  # noqa: BLE001  (recorded in meta.json, the report says it)
+        budget = "no budget" if prefix else "the default budget"
+        failure.append(f"{len(ids)} objects, {budget}: {type(e).__name__}: {str(e).strip()}")
+        row[prefix + "statuses"] = " ".join("error" for _ in ids)
+        return row
     row[prefix + "projtrack_ms"] = f"{1e3 * (time.perf_counter() - t0):.3f}"
     rs = [res[oid] for oid in ids.values() if oid in res]
     if rs and all(hasattr(r, "work") for r in rs):
@@ -72,7 +81,7 @@ def run(scene, out, log=print):
             for budget, settings in (("default", {}), ("unlimited", runs.UNLIMITED)):
                 t = runs.multi_tracker(**settings)
                 ids, _ = runs.start_all(t, scene.frames[0], firsts[:c], "mask")
-                multis[(c, budget)] = (t, ids)
+                multis[(c, budget)] = (t, ids, [])
     except davis_runners.NotMeasured as e:
         multis, note = {}, str(e)
         log(f"  cost: projtrack not measured: {e}")
@@ -107,6 +116,7 @@ def run(scene, out, log=print):
             rows.append(row)
         if i % 10 == 0:
             log(f"  cost: frame {i} of {n - 1}")
+    info["errors"] = [m[2][0] for m in multis.values() if m[2]]
     with open(os.path.join(out, "cost.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
