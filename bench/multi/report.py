@@ -415,8 +415,8 @@ def cost_section(run):
         work = get(most, prefix + "work") if most else []
         shares = [w / limit for w in work] if isinstance(work, list) and work and limit else []
         statuses = get(most, prefix + "statuses") if most else {}
-        if prefix == "" and shares:
-            most_share = max(shares)
+        if prefix == "" and shares and len(shares) == get(most, "frames"):
+            most_share = max(shares)  # the target rests on every timed frame's work
         lines.append(
             f"| {name} | {len(shares) if shares else MISSING} | "
             f"{fmt_pct(T.mean(shares) if shares else math.nan, 1)} | "
@@ -427,8 +427,9 @@ def cost_section(run):
             f"{fmt_pct(get(most, prefix + 'followed') if most else math.nan)} |")
     lines += ["", "| target | measured | verdict |", "|---|---|---|",
               f"| with {most or MISSING} objects the frame's work within its budget on every "
-              f"frame (the MultiTracker's bound: the objects share one frame's) | the most "
-              f"{fmt_pct(most_share, 1)} | {target([most_share], lambda m: m <= 1)} |", ""]
+              f"frame (the MultiTracker's bound: the objects share one frame's; a frame without "
+              f"its work, not measured) | the most {fmt_pct(most_share, 1)} | "
+              f"{target([most_share], lambda m: m <= 1)} |", ""]
     return lines
 
 
