@@ -4,6 +4,8 @@
 
 #include <gst/video/video.h>
 
+#include <vector>
+
 #include "projtrack/silhouette_mask.hpp"
 
 namespace projtrack::gst {
@@ -12,9 +14,9 @@ namespace projtrack::gst {
 // ABGR.
 bool has_alpha(GstVideoFormat format);
 
-// Sets the frame's alpha to 255 inside `silhouette` and to 0 elsewhere (everywhere when it is
-// empty: no object measured on this frame). The silhouette is at the tracker's working scale, so
-// its edge follows blocks of that many pixels.
-void write_alpha(GstVideoFrame* frame, const SilhouetteMask& silhouette);
+// Sets the frame's alpha to 255 inside any of `silhouettes` and to 0 elsewhere (everywhere when
+// none holds a pixel: no object measured on this frame). A silhouette is at its tracker's working
+// scale, so its edge follows blocks of that many pixels.
+void write_alpha(GstVideoFrame* frame, const std::vector<SilhouetteMask>& silhouettes);
 
 }  // namespace projtrack::gst

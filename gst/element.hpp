@@ -7,7 +7,9 @@
 #include <gst/video/video.h>
 
 #include <atomic>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <string>
@@ -15,6 +17,7 @@
 
 #include "frame_color.hpp"
 #include "gstprojtrack.h"
+#include "projtrack/multi_tracker.hpp"
 #include "projtrack/tracker.hpp"
 #include "settings.hpp"
 
@@ -22,6 +25,20 @@ GST_DEBUG_CATEGORY_EXTERN(gst_projtrack_debug);
 #define GST_CAT_DEFAULT gst_projtrack_debug
 
 namespace projtrack::gst {
+
+// The objects followed at once beside the single track (start-boxes, start-points, add-box,
+// add-point, click-adds), each with the MultiTracker's id (from 1). Under State::objects_mutex:
+// the application's threads add and remove objects while the streaming thread tracks them.
+struct Objects {
+  // max-objects is enforced by the element (it may change while playing); the library's own
+  // limit is the property's top.
+  MultiTracker tracker{static_cast<std::size_t>(kMaxObjects)};
+  // Per id: the status of the last message posted (updates=on-change), as Stream::last_posted.
+  std::map<int, std::optional<TrackStatus>> last_posted;
+  // Per id: the track-id of its features (next_track_id(), new on every acquisition), so that
+  // every projtrack structure names its track as the single track's does.
+  std::map<int, int> track_ids;
+};
 
 // Per-stream state: created in set_info, dropped in stop; touched by the streaming thread only.
 struct Stream {
@@ -43,6 +60,7 @@ struct Stream {
   // The status of the last message posted (updates=on-change).
   std::optional<TrackStatus> last_posted;
   std::string last_warning;  // the conflict last reported by an element warning
+  Objects objects;           // under State::objects_mutex
 };
 
 // What the application's threads (properties, signals, clicks) and the streaming thread share:
@@ -56,12 +74,22 @@ struct Locked {
   int frame_width = 0, frame_height = 0;  // the negotiated size, for clicks
   // The tracker's inner point after the last frame (current-inner-point-x/y); -1 = none.
   int tracked_x = -1, tracked_y = -1;
+  // start-boxes or start-points were set (or a flush, a restart): the streaming thread starts the
+  // objects anew from them before its next frame.
+  bool restart_objects = false;
+  // Starts refused by start-boxes or start-points (a malformed tuple), for the streaming thread to
+  // warn of (it posts, never under the lock).
+  std::string objects_note;
 };
 
 // The element's C++ state: made in instance init, freed in finalize.
 struct State {
   Locked locked;                   // GST_OBJECT_LOCK
   std::unique_ptr<Stream> stream;  // the streaming thread's; null outside set_info .. stop
+  // Guards `stream` being made or dropped, and stream->objects, against the threads that add and
+  // remove objects (signals, clicks). Taken before the object lock, never inside it, and never
+  // held while a message is posted (a bus sync handler may add an object).
+  std::mutex objects_mutex;
   // Set when the streaming thread must drop what it is doing (PAUSED → READY, a flush): the
   // tracker polls it at its checkpoints; cleared when streaming starts again.
   std::atomic<bool> interrupt{false};

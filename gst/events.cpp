@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "element.hpp"
+#include "objects.hpp"
 #include "seeds.hpp"
 
 namespace projtrack::gst {
@@ -34,6 +35,7 @@ void on_sink_event(GstProjtrack* self, GstEvent* event) {
     GST_DEBUG_OBJECT(self, "flushed: the track restarts from the seed given, if any");
     GST_OBJECT_LOCK(self);
     reseed_locked(self);
+    self->state->locked.restart_objects = true;  // the objects too, from their lists
     GST_OBJECT_UNLOCK(self);
     self->state->interrupt.store(false);
   }
@@ -53,6 +55,12 @@ void on_src_event(GstProjtrack* self, GstEvent* event) {
   const double px = std::round(x), py = std::round(y);
   const bool in_picture = px >= 0 && py >= 0 && px < self->state->locked.frame_width &&
                           py < self->state->locked.frame_height;
+  if (button == 1 && in_picture && self->state->locked.settings.click_adds) {
+    GST_OBJECT_UNLOCK(self);
+    // click-adds: the object clicked joins those followed; the single track is left alone.
+    add_clicked(self, static_cast<int>(px), static_cast<int>(py));
+    return;
+  }
   const bool changed = button == 3 || in_picture;
   if (button == 3)
     set_inner_point_locked(self, -1, -1);

@@ -44,6 +44,14 @@
  * of another size rescale the track, another format keeps it; a flush restarts it from the point
  * or box given; GAP buffers pass untouched. Numeric settings may be driven by a #GstController.
  *
+ * It follows several objects at once too, each with an id of its own (from 1), beside the single
+ * track above, which stays as it is: `start-boxes` and `start-points` (lists of boxes and points),
+ * the `add-box` and `add-point` action signals (which return the new id, 0 when refused with a
+ * warning) and `remove-object`, or a click with `click-adds=true`; at most `max-objects`. Each
+ * object gets its own ROI meta (its `id` the object's), GstProjtrackMeta and message, with an `id`
+ * field; the overlay draws each in its colour with its id, and `alpha-mask` cuts out all of them or
+ * those `alpha-ids` lists.
+ *
  * No frame can stall the pipeline: each has a budget of work (`max-work`, in passes over its
  * pixels, counted in work and never in time) that every stage spends from — the flow model's
  * before each of its stages runs, edge detection and every estimate as they go; a frame that runs
@@ -76,6 +84,12 @@
  * video/x-raw,width=320,height=240 ! c.sink_0 videotestsrc pattern=ball ! video/x-raw,format=BGRA,
  * width=320,height=240 ! projtrack inner-point-x=160 inner-point-y=120 alpha-mask=true ! c.sink_1
  * ]| The tracked ball alone (its silhouette as alpha) over colour bars.
+ * |[
+ * gst-launch-1.0 -m compositor name=c sink_1::xpos=160 ! video/x-raw,width=320,height=240 !
+ * videoconvert ! projtrack start-boxes="<<50,90,60,60>,<210,90,60,60>>" ! fakesink videotestsrc
+ * pattern=ball num-buffers=30 ! video/x-raw,width=160,height=240 ! c.sink_0 videotestsrc
+ * pattern=ball num-buffers=30 ! video/x-raw,width=160,height=240 ! c.sink_1
+ * ]| Two balls at once: a message per ball and frame, with `id=1` and `id=2`.
  */
 
 // The element's class: its type, its pads and metadata, its signals, and the virtual methods, each
@@ -85,6 +99,7 @@
 #include "element.hpp"
 #include "events.hpp"
 #include "meta.hpp"
+#include "objects.hpp"
 #include "properties.hpp"
 #include "seeds.hpp"
 #include "stream.hpp"
@@ -93,7 +108,15 @@ GST_DEBUG_CATEGORY(gst_projtrack_debug);
 
 using projtrack::gst::SeedCommand;
 
-enum { SIGNAL_TRACK_POINT, SIGNAL_TRACK_BOX, SIGNAL_RESET, N_SIGNALS };
+enum {
+  SIGNAL_TRACK_POINT,
+  SIGNAL_TRACK_BOX,
+  SIGNAL_RESET,
+  SIGNAL_ADD_BOX,
+  SIGNAL_ADD_POINT,
+  SIGNAL_REMOVE_OBJECT,
+  N_SIGNALS
+};
 
 static guint signals[N_SIGNALS];
 
@@ -172,6 +195,17 @@ static void gst_projtrack_class_init(GstProjtrackClass* klass) {
   signals[SIGNAL_RESET] = g_signal_new_class_handler("reset", G_TYPE_FROM_CLASS(klass), action,
                                                      G_CALLBACK(projtrack::gst::reset), nullptr,
                                                      nullptr, nullptr, G_TYPE_NONE, 0);
+  // Objects followed at once, each with its id: gint id = 0; g_signal_emit_by_name(element,
+  // "add-box", x, y, width, height, &id).
+  signals[SIGNAL_ADD_BOX] = g_signal_new_class_handler(
+      "add-box", G_TYPE_FROM_CLASS(klass), action, G_CALLBACK(projtrack::gst::add_box), nullptr,
+      nullptr, nullptr, G_TYPE_INT, 4, G_TYPE_INT, G_TYPE_INT, G_TYPE_INT, G_TYPE_INT);
+  signals[SIGNAL_ADD_POINT] = g_signal_new_class_handler(
+      "add-point", G_TYPE_FROM_CLASS(klass), action, G_CALLBACK(projtrack::gst::add_point), nullptr,
+      nullptr, nullptr, G_TYPE_INT, 2, G_TYPE_INT, G_TYPE_INT);
+  signals[SIGNAL_REMOVE_OBJECT] = g_signal_new_class_handler(
+      "remove-object", G_TYPE_FROM_CLASS(klass), action, G_CALLBACK(projtrack::gst::remove_object),
+      nullptr, nullptr, nullptr, G_TYPE_BOOLEAN, 1, G_TYPE_INT);
 
   gst_element_class_set_static_metadata(
       element_class, "Object projection feature tracker", "Filter/Analyzer/Video",

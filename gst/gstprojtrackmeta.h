@@ -30,8 +30,9 @@ static inline const GstStructure* gst_buffer_get_projtrack_meta(GstBuffer* buffe
   return meta ? gst_custom_meta_get_structure(meta) : NULL;
 }
 
-/* One projtrack meta after the other (one per projtrack element the buffer went through; their
- * "element" field names it): start with *state = NULL; NULL when there are no more. */
+/* One projtrack meta after the other (one per projtrack element the buffer went through, and per
+ * object each follows: their "element" and "id" fields name them): start with *state = NULL; NULL
+ * when there are no more. */
 static inline const GstStructure* gst_buffer_iterate_projtrack_meta(GstBuffer* buffer,
                                                                     gpointer* state) {
   const GstMetaInfo* info = gst_meta_get_info(GST_PROJTRACK_META_NAME);
@@ -52,6 +53,8 @@ typedef struct {
   gint inner_point_x, inner_point_y;
   gdouble position_x, position_y, depth; /* the 3D pointer */
   gboolean push;                         /* a push completed on this frame */
+  gint id; /* an object among several (start-boxes, add-box...): its id, from 1; 0: the single
+              track */
 } GstProjtrackFeatures;
 
 /* Fills `f` from a projtrack meta's structure `s`; FALSE (and `f` partly filled) when `s` is NULL
@@ -62,6 +65,8 @@ static inline gboolean gst_projtrack_features_read(const GstStructure* s, GstPro
   f->element = gst_structure_get_string(s, "element");
   f->method = gst_structure_get_string(s, "method");
   f->push = g_strcmp0(gst_structure_get_string(s, "gesture"), "push") == 0;
+  f->id = 0;
+  gst_structure_get_int(s, "id", &f->id); /* absent: the single track */
   return f->status && f->element && f->method &&
          gst_structure_get(s, "track-id", G_TYPE_INT, &f->track_id, "frame-width", G_TYPE_INT,
                            &f->frame_width, "frame-height", G_TYPE_INT, &f->frame_height,

@@ -8,6 +8,7 @@
 
 #include "element.hpp"
 #include "enum_types.h"
+#include "objects.hpp"
 #include "property_types.hpp"
 #include "seeds.hpp"
 

@@ -6,6 +6,8 @@
 
 #include <gst/gst.h>
 
+#include <vector>
+
 #include "projtrack/geometry.hpp"
 
 namespace projtrack::gst {
@@ -48,6 +50,24 @@ struct Box {
   };
 };
 
+// Several tuples of ints, <<x, y, width, height>, ...> or <<x, y>, ...>: a GstValueArray of
+// GstValueArrays of ints, so that gst-launch-1.0 parses the nested syntax (an array spec of plain
+// ints makes GStreamer 1.22's deserializer crash on a nested '<'). Read and written by the row's
+// handlers, which say which tuples are refused.
+struct Tuples {
+  struct Range {
+    Range(gint lo, gint hi) : min(lo), max(hi) {}
+    gint min, max;
+  };
+};
+// A list of ints <a, b, ...> (a GstValueArray of ints), into a std::vector<int>.
+struct Ints {
+  struct Range {
+    Range(gint lo, gint hi) : min(lo), max(hi) {}
+    gint min, max;
+  };
+};
+
 inline GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Uint::Range r,
                               guint def, GParamFlags flags) {
   return g_param_spec_uint(name, nick, blurb, r.min, r.max, def, flags);
@@ -83,6 +103,27 @@ inline GParamSpec* param_spec(const char* name, const char* nick, const char* bl
   return gst_param_spec_array(name, nick, blurb, coordinate, flags);
 }
 
+// A GstValueArray's default is always the empty array: the row's default must be empty too.
+template <class T>
+GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Tuples::Range r,
+                       const std::vector<T>& def, GParamFlags flags) {
+  g_assert(def.empty());
+  const auto static_rw = static_cast<GParamFlags>(G_PARAM_READWRITE | G_PARAM_STATIC_STRINGS);
+  GParamSpec* coordinate = g_param_spec_int("coordinate", "Coordinate", "one number of a tuple",
+                                            r.min, r.max, 0, static_rw);
+  GParamSpec* tuple =
+      gst_param_spec_array("tuple", "Tuple", "the numbers of one start", coordinate, static_rw);
+  return gst_param_spec_array(name, nick, blurb, tuple, flags);
+}
+inline GParamSpec* param_spec(const char* name, const char* nick, const char* blurb, Ints::Range r,
+                              const std::vector<int>& def, GParamFlags flags) {
+  g_assert(def.empty());
+  GParamSpec* item =
+      g_param_spec_int("item", "Item", "one number", r.min, r.max, 0,
+                       static_cast<GParamFlags>(G_PARAM_READWRITE | G_PARAM_STATIC_STRINGS));
+  return gst_param_spec_array(name, nick, blurb, item, flags);
+}
+
 // A GValue of the row's type into its ElementSettings member, and back: the member's own C++ type
 // (an int for a uint property, the library's enum for an enum one).
 inline void from_value(Uint, const GValue* v, int& member) {
@@ -95,6 +136,21 @@ inline void from_value(Boolean, const GValue* v, bool& member) { member = g_valu
 inline void to_value(Boolean, GValue* v, bool member) { g_value_set_boolean(v, member); }
 inline void from_value(Flags, const GValue* v, unsigned& member) { member = g_value_get_flags(v); }
 inline void to_value(Flags, GValue* v, unsigned member) { g_value_set_flags(v, member); }
+// A list of ints: its int items (the param spec's validation keeps only those).
+inline void from_value(Ints, const GValue* v, std::vector<int>& member) {
+  member.clear();
+  for (guint i = 0; i < gst_value_array_get_size(v); ++i)
+    if (const GValue* item = gst_value_array_get_value(v, i); G_VALUE_HOLDS_INT(item))
+      member.push_back(g_value_get_int(item));
+}
+inline void to_value(Ints, GValue* v, const std::vector<int>& member) {
+  for (int m : member) {
+    GValue item = G_VALUE_INIT;
+    g_value_init(&item, G_TYPE_INT);
+    g_value_set_int(&item, m);
+    gst_value_array_append_and_take_value(v, &item);
+  }
+}
 template <class E>
 void from_value(Enum, const GValue* v, E& member) {
   member = static_cast<E>(g_value_get_enum(v));

@@ -37,6 +37,9 @@ GstStructure* result_structure(const FrameReport& report) {
       "projtrack", "status", G_TYPE_STRING, status_name(r.status).data(), "method", G_TYPE_STRING,
       method_name(report.method).data(), "element", G_TYPE_STRING, report.element, "frame-width",
       G_TYPE_INT, report.width, "frame-height", G_TYPE_INT, report.height, nullptr);
+  // An object followed among several has its id (from 1); the single track's fields stay as
+  // they always were, without one.
+  if (r.id > 0) gst_structure_set(s, "id", G_TYPE_INT, r.id, nullptr);
   const Features& f = r.features;
   if (f.valid()) {  // when lost: the last accepted features
     if (report.track_id > 0) gst_structure_set(s, "track-id", G_TYPE_INT, report.track_id, nullptr);
@@ -72,7 +75,7 @@ void attach_meta(GstBuffer* buffer, const FrameReport& report) {
   const Rect& b = report.result.features.bbox;
   GstVideoRegionOfInterestMeta* roi =
       gst_buffer_add_video_region_of_interest_meta(buffer, "object", b.x, b.y, b.width, b.height);
-  roi->id = report.track_id;
+  roi->id = report.result.id > 0 ? report.result.id : report.track_id;
   GstStructure* features = result_structure(report);
   // The ROI meta's parameters do not survive videoscale in GStreamer 1.22 (its transform drops
   // them): GstProjtrackMeta carries the same fields through.

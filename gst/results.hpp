@@ -31,7 +31,8 @@ struct FrameReport {
 // A new track id: unique in the process (every projtrack element, every track), > 0.
 int next_track_id();
 
-// While tracking: a GstVideoRegionOfInterestMeta of type "object" with the box, id track_id and
+// While tracking: a GstVideoRegionOfInterestMeta of type "object" with the box, id track_id (an
+// object among several: its own id) and
 // the features as its "projtrack" parameter structure, and a GstProjtrackMeta with the same.
 void attach_meta(GstBuffer* buffer, const FrameReport& report);
 

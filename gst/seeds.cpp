@@ -182,26 +182,41 @@ std::string apply_seed(Tracker& tracker, SeedCommand command, const ElementSetti
   return {};
 }
 
-void rescale_seeds_locked(GstProjtrack* self, int width, int height, int new_width,
-                          int new_height) {
-  ElementSettings& s = self->state->locked.settings;
-  const double sx = static_cast<double>(new_width) / width;
-  const double sy = static_cast<double>(new_height) / height;
+Point2i rescaled_point(Point2i p, int width, int height, int new_width, int new_height) {
   const auto scale = [](int v, double f) {
     return static_cast<int>(std::clamp(std::floor((v + 0.5) * f), 0.0, double(G_MAXINT)));
   };
-  if (s.inner_point_x >= 0 && s.inner_point_y >= 0) {
-    s.inner_point_x = scale(s.inner_point_x, sx);
-    s.inner_point_y = scale(s.inner_point_y, sy);
-  }
+  return {scale(p.x, static_cast<double>(new_width) / width),
+          scale(p.y, static_cast<double>(new_height) / height)};
+}
+
+Rect rescaled_box(const Rect& box, int width, int height, int new_width, int new_height) {
+  const double sx = static_cast<double>(new_width) / width;
+  const double sy = static_cast<double>(new_height) / height;
   // The part of the box in the old picture (the rest was never applied), scaled.
-  if (const Rect b = clip_to_frame(s.start_box, width, height); !b.empty()) {
-    const int x0 = static_cast<int>(std::floor(b.x * sx)),
-              y0 = static_cast<int>(std::floor(b.y * sy));
-    const int x1 = static_cast<int>(std::ceil((static_cast<double>(b.x) + b.width) * sx));
-    const int y1 = static_cast<int>(std::ceil((static_cast<double>(b.y) + b.height) * sy));
-    s.start_box = {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
+  const Rect b = clip_to_frame(box, width, height);
+  if (b.empty()) return box;
+  const int x0 = static_cast<int>(std::floor(b.x * sx)),
+            y0 = static_cast<int>(std::floor(b.y * sy));
+  const int x1 = static_cast<int>(std::ceil((static_cast<double>(b.x) + b.width) * sx));
+  const int y1 = static_cast<int>(std::ceil((static_cast<double>(b.y) + b.height) * sy));
+  return {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
+}
+
+void rescale_seeds_locked(GstProjtrack* self, int width, int height, int new_width,
+                          int new_height) {
+  ElementSettings& s = self->state->locked.settings;
+  if (s.inner_point_x >= 0 && s.inner_point_y >= 0) {
+    const Point2i p =
+        rescaled_point({s.inner_point_x, s.inner_point_y}, width, height, new_width, new_height);
+    s.inner_point_x = p.x;
+    s.inner_point_y = p.y;
   }
+  s.start_box = rescaled_box(s.start_box, width, height, new_width, new_height);
+  // The objects' lists too, for the next restart (a flush, READY and back).
+  for (Point2i& p : s.start_points)
+    if (p.x >= 0 && p.y >= 0) p = rescaled_point(p, width, height, new_width, new_height);
+  for (Rect& b : s.start_boxes) b = rescaled_box(b, width, height, new_width, new_height);
 }
 
 void reset(GstProjtrack* self) {

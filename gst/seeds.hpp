@@ -22,8 +22,14 @@ namespace projtrack::gst {
 void set_inner_point_locked(GstProjtrack* self, int x, int y, bool awaiting_coordinate = false);
 // The track starts in `box` on the next frame; an empty box stops it.
 void set_box_locked(GstProjtrack* self, const Rect& box);
-// The frames changed size: the point and box given follow, so that a restart finds the object.
+// The frames changed size: the point and box given follow, and the objects' lists (start-points,
+// start-boxes), so that a restart finds the objects.
 void rescale_seeds_locked(GstProjtrack* self, int width, int height, int new_width, int new_height);
+// A pixel of a width × height frame in the new_width × new_height one (clamped at 0).
+Point2i rescaled_point(Point2i p, int width, int height, int new_width, int new_height);
+// The part of `box` in a width × height frame, scaled to cover the same pixels of the new one;
+// a box wholly outside the old frame (never applied) is kept as it is.
+Rect rescaled_box(const Rect& box, int width, int height, int new_width, int new_height);
 // A restart (caps change, stop/start) begins again from the last inner point or box given.
 void reseed_locked(GstProjtrack* self);
 // Tells the app that the seed changed: inner-point-x/-y and start-box. Without the lock.

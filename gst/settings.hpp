@@ -2,6 +2,8 @@
 // reads it: one copy per frame, taken under the object lock.
 #pragma once
 
+#include <vector>
+
 #include "projtrack/geometry.hpp"
 #include "projtrack/names.hpp"
 #include "projtrack/settings.hpp"
@@ -38,7 +40,18 @@ struct ElementSettings : Settings {
   int inner_point_x = -1,
       inner_point_y = -1;  // the last inner point given (property, signal, click); -1 = none
   Rect start_box;          // the last box given (start-box, track-box); empty = none
+  // Several objects at once (a MultiTracker beside the single track above, ids from 1): the
+  // starts given by start-boxes and start-points, how many may be followed, whether a click adds
+  // one, and whose silhouettes alpha-mask cuts out (0: the single track's; empty: all).
+  std::vector<Rect> start_boxes;
+  std::vector<Point2i> start_points;
+  int max_objects = 8;
+  bool click_adds = false;
+  std::vector<int> alpha_ids;
 };
+
+// The most objects max-objects allows (its range's top).
+inline constexpr int kMaxObjects = 64;
 
 // What the streaming thread must do to the track before the next frame.
 enum class SeedCommand { None, Seed, SeedBox, Reset };

@@ -6,16 +6,16 @@
 
 #include <chrono>
 #include <exception>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
 
 #include "alpha_mask.hpp"
 #include "element.hpp"
-#include "frame_color.hpp"
 #include "frame_mapping.hpp"
-#include "overlay.hpp"
-#include "projtrack/sample_clock.hpp"
+#include "frame_work.hpp"
+#include "object_frames.hpp"
 #include "results.hpp"
 #include "seeds.hpp"
 
@@ -23,45 +23,14 @@ namespace projtrack::gst {
 
 namespace {
 
-// Runs edges + estimator on one mapped frame (after the seed given, if any: why it could not be
-// applied goes into `note`), and draws and writes the alpha when asked.
-TrackResult process(GstProjtrack* self, GstVideoFrame* frame, const ElementSettings& s,
-                    SeedCommand command, std::string& note) {
-  Stream& st = *self->state->stream;
-  note = apply_seed(st.tracker, command, s, st.width, st.height);
-  Settings bundle = s;  // the library's part of the element's settings
-  // frame_color() gives every frame at video range: an edge map's black is 16 there.
-  bundle.edges.input_black_level = kVideoBlack;
-  const ColorView color = frame_color(frame, st.converted);
-  // What the method did is recorded only when it is drawn (rays may number 131 072).
-  const bool traced = s.draw && (s.draw_flags & (kDrawGrid | kDrawOutline));
-  Trace* trace = traced ? &st.trace : nullptr;
-  // Seconds for the smoothing and the push detector: the buffer's time, else the assumed rate.
-  const GstClockTime pts = GST_BUFFER_PTS(frame->buffer);
-  const double t = GST_CLOCK_TIME_IS_VALID(pts)
-                       ? static_cast<double>(pts) / GST_SECOND
-                       : static_cast<double>(st.frames) / kAssumedFrameRate;
-  ++st.frames;
-  // The tracker computes the edges itself: while tracking, only around the object.
-  TrackResult r = st.tracker.track(color, t, bundle, trace);
-  const SilhouetteMask silhouette =
-      has_features(r.status) ? st.tracker.silhouette() : SilhouetteMask{};
-  st.outline = outline_polygons(silhouette);
-  if (s.alpha_mask && has_alpha(GST_VIDEO_FRAME_FORMAT(frame))) write_alpha(frame, silhouette);
-  if (s.draw) {
-    draw_overlay(frame, s.method, r, st.trace, s.draw_flags);
-    if (traced && st.trace.rays_not_recorded)
-      GST_LOG_OBJECT(self, "overlay: %zu rays not recorded", st.trace.rays_not_recorded);
-  }
-  return r;
-}
-
 // A buffer whose layout does not fit its memory is not read: it passes through untouched, the
 // track waits (a seed given meanwhile applies to the next readable frame), and the status says
 // why. One element warning per reason and caps; the debug log has every frame.
-TrackResult unread_frame(GstProjtrack* self, const FrameMapping& mapping, SeedCommand command) {
+TrackResult unread_frame(GstProjtrack* self, const FrameMapping& mapping, SeedCommand command,
+                         bool restart) {
   GST_OBJECT_LOCK(self);
   if (self->state->locked.pending == SeedCommand::None) self->state->locked.pending = command;
+  if (restart) self->state->locked.restart_objects = true;
   GST_OBJECT_UNLOCK(self);
   GST_DEBUG_OBJECT(self, "buffer not read (%s): %s", mapping.reason, mapping.detail.c_str());
   if (self->state->stream->layout_warnings.insert(mapping.reason).second) {
@@ -102,10 +71,13 @@ void report_status(GstProjtrack* self, Stream& st, const TrackResult& r) {
 gboolean set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info, GstCaps*,
                   GstVideoInfo*) {
   auto* self = GST_PROJTRACK(filter);
+  // The objects' tracker is the application's threads' too (add-box, remove-object).
+  std::unique_lock<std::mutex> objects_lock(self->state->objects_mutex);
   const bool first = !self->state->stream;
   if (first) {
     self->state->stream = std::make_unique<Stream>();
     self->state->stream->tracker.set_stop_flag(&self->state->interrupt);
+    self->state->stream->objects.tracker.set_stop_flag(&self->state->interrupt);
   }
   Stream& st = *self->state->stream;
   const int width = GST_VIDEO_INFO_WIDTH(in_info), height = GST_VIDEO_INFO_HEIGHT(in_info);
@@ -127,25 +99,32 @@ gboolean set_info(GstVideoFilter* filter, GstCaps*, GstVideoInfo* in_info, GstCa
     GST_DEBUG_OBJECT(self, "new frame size %dx%d -> %dx%d: the track is rescaled", st.width,
                      st.height, width, height);
     st.tracker.rescale(st.width, st.height, width, height);
-    notify_inner_point(self);
+    st.objects.tracker.rescale(st.width, st.height, width, height);
   } else if (recoloured) {
     GST_DEBUG_OBJECT(self, "new format %s: the object's colours are learned anew",
                      gst_video_format_to_string(GST_VIDEO_INFO_FORMAT(in_info)));
     st.tracker.relearn();
+    st.objects.tracker.relearn();
   }
   st.width = width;
   st.height = height;
   st.format = GST_VIDEO_INFO_FORMAT(in_info);
   st.range = colours.range;
   st.matrix = colours.matrix;
+  objects_lock.unlock();  // a notify handler may add an object
+  if (resized) notify_inner_point(self);
   return TRUE;
 }
 
 gboolean stop(GstBaseTransform* trans) {
   auto* self = GST_PROJTRACK(trans);
-  self->state->stream.reset();
+  {
+    std::lock_guard<std::mutex> objects_lock(self->state->objects_mutex);
+    self->state->stream.reset();
+  }
   GST_OBJECT_LOCK(self);
   reseed_locked(self);
+  self->state->locked.restart_objects = true;  // the next stream starts from the lists again
   self->state->locked.tracked_x = self->state->locked.tracked_y = -1;
   GST_OBJECT_UNLOCK(self);
   return TRUE;
@@ -158,6 +137,20 @@ void warn_of_seed(GstProjtrack* self, const std::string& note) {
   if (!note.empty())
     GST_ELEMENT_WARNING(self, LIBRARY, SETTINGS, ("%s", note.c_str()),
                         ("the track in hand goes on; see the message's detail"));
+}
+
+// Warns of starts of start-boxes or start-points refused: an element warning each.
+void warn_of_starts(GstProjtrack* self, const std::vector<std::string>& refused) {
+  for (const std::string& why : refused)
+    if (!why.empty())
+      GST_ELEMENT_WARNING(self, LIBRARY, SETTINGS, ("%s", why.c_str()),
+                          ("the other objects are followed; see docs/element.md"));
+}
+
+guint64 elapsed_ns(std::chrono::steady_clock::time_point start) {
+  return static_cast<guint64>(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start)
+          .count());
 }
 
 // After the frame: the status logged and warned, the tracker's inner point published, and the
@@ -175,16 +168,29 @@ void report(GstProjtrack* self, GstBuffer* buffer, const ElementSettings& s, con
   self->state->locked.tracked_y = inner ? inner->y : -1;
   GST_OBJECT_UNLOCK(self);
   if (!(s.post_messages && worth_posting(s.updates, r, st.last_posted))) return;
-  const auto ns =
-      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start)
-          .count();
+  const guint64 ns = elapsed_ns(start);
   const FrameReport frame{r,         s.method,   st.element_name.c_str(), st.track_id, st.width,
                           st.height, st.outline, std::move(note)};
-  GstMessage* msg = result_message(self, buffer, frame, static_cast<guint64>(ns));
+  GstMessage* msg = result_message(self, buffer, frame, ns);
   if (!mapping.ok())
     gst_structure_set(gst_message_writable_structure(msg), "reason", G_TYPE_STRING, mapping.reason,
                       nullptr);
   gst_element_post_message(GST_ELEMENT(self), msg);  // never under the object lock
+}
+
+// The single track's metas and message, as they always were.
+void report_single(GstProjtrack* self, GstBuffer* buffer, const ElementSettings& s,
+                   const TrackResult& r, const FrameMapping& mapping, std::string note,
+                   std::chrono::steady_clock::time_point start) {
+  Stream& st = *self->state->stream;
+  if (r.acquired) st.track_id = next_track_id();
+  if (!mapping.ok()) st.outline.clear();
+  if (has_features(r.status)) {
+    const FrameReport frame_report{
+        r, s.method, st.element_name.c_str(), st.track_id, st.width, st.height, st.outline, {}};
+    attach_meta(buffer, frame_report);
+  }
+  report(self, buffer, s, r, mapping, std::move(note), start);
 }
 
 }  // namespace
@@ -208,9 +214,12 @@ GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
   GST_OBJECT_LOCK(self);
   const ElementSettings s = self->state->locked.settings;
   const SeedCommand command = std::exchange(self->state->locked.pending, SeedCommand::None);
+  const bool restart = std::exchange(self->state->locked.restart_objects, false);
   std::string note = std::exchange(self->state->locked.seed_note, std::string());
+  const std::string list_note = std::exchange(self->state->locked.objects_note, std::string());
   GST_OBJECT_UNLOCK(self);
   warn_of_seed(self, note);
+  warn_of_starts(self, {list_note});
 
   const bool writes =
       s.draw || (s.alpha_mask && has_alpha(GST_VIDEO_INFO_FORMAT(&filter->in_info)));
@@ -218,10 +227,11 @@ GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
   const FrameMapping mapping = map_frame_checked(&frame, &filter->in_info, buffer,
                                                  writes ? GST_MAP_READWRITE : GST_MAP_READ);
   if (mapping.merged) GST_DEBUG_OBJECT(self, "a plane spanned memory blocks: merged them");
-  TrackResult r = mapping.ok() ? TrackResult{} : unread_frame(self, mapping, command);
+  FrameOutcome out;
+  if (!mapping.ok()) out.single = unread_frame(self, mapping, command, restart);
   std::string not_applied;
   try {
-    if (mapping.ok()) r = process(self, &frame, s, command, not_applied);
+    if (mapping.ok()) out = process(self, &frame, s, command, restart, not_applied);
   } catch (const std::exception& e) {  // e.g. std::bad_alloc: never unwind into GStreamer's C
     gst_video_frame_unmap(&frame);
     GST_ELEMENT_ERROR(self, STREAM, FAILED, ("Tracking failed: %s", e.what()), (nullptr));
@@ -229,17 +239,11 @@ GstFlowReturn transform_ip(GstBaseTransform* trans, GstBuffer* buffer) {
   }
   if (mapping.ok()) gst_video_frame_unmap(&frame);
   warn_of_seed(self, not_applied);
+  warn_of_starts(self, out.objects.refused);
   if (!not_applied.empty()) note += (note.empty() ? "" : "; ") + not_applied;
 
-  Stream& st = *self->state->stream;
-  if (r.acquired) st.track_id = next_track_id();
-  if (!mapping.ok()) st.outline.clear();
-  if (has_features(r.status)) {
-    const FrameReport frame_report{
-        r, s.method, st.element_name.c_str(), st.track_id, st.width, st.height, st.outline, {}};
-    attach_meta(buffer, frame_report);
-  }
-  report(self, buffer, s, r, mapping, std::move(note), start);
+  if (out.single_ran) report_single(self, buffer, s, out.single, mapping, std::move(note), start);
+  report_objects(self, buffer, s, out.objects, elapsed_ns(start));
   return GST_FLOW_OK;
 }
 

@@ -61,6 +61,8 @@ def commands(out):
                             [PY, f'{ex}/pointer_uinput.py', '--dry-run', '--generated'], 7, []),
         'track-numpy': ('$ PYTHONPATH=build/python examples/track_numpy.py --frames 3',
                         [PY, f'{ex}/track_numpy.py', '--frames', '3'], None, [TIMING]),
+        'track-several': ('$ PYTHONPATH=build/python examples/track_several.py --quiet',
+                          [PY, f'{ex}/track_several.py', '--quiet'], None, []),
     }
 
 
@@ -127,6 +129,16 @@ def python_picture(build):
     print('sample_outputs: wrote docs/python/track-numpy.png')
 
 
+def several_picture(build):
+    """The several-objects example's frames 0, 60 and 120 of the cup: the cup and the hand."""
+    picture = os.path.join(ROOT, 'docs', 'python', 'cup-and-hand.png')
+    subprocess.run([PY, os.path.join(ROOT, 'examples', 'track_several.py'), '--quiet',
+                    '--frames', '121', '--picture', picture], check=True, timeout=600,
+                   stdout=subprocess.DEVNULL, env=dict(os.environ,
+                                                       PYTHONPATH=os.path.join(build, 'python')))
+    print('sample_outputs: wrote docs/python/cup-and-hand.png')
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument('--build', default='build')
@@ -164,6 +176,7 @@ def main():
         return 1 if problems else 0
     overlay_pictures(out, args.build)
     python_picture(build)
+    several_picture(build)
     return 0
 
 

@@ -13,8 +13,9 @@ std::uint64_t FrameEvidence::images_cost(const cv::Rect& part, int scale) {
 const WorkImages* FrameEvidence::images(int scale, const cv::Rect& region) {
   const cv::Rect work({0, 0}, work_size(width(), height(), scale));
   cv::Rect wanted = region.empty() ? work : region & work;
-  const int held = scales_[0] == scale ? 0 : scales_[1] == scale ? 1 : -1;
-  const int slot = held >= 0 ? held : older_;
+  const auto at = std::find(scales_.begin(), scales_.end(), scale);
+  const int held = at == scales_.end() ? -1 : static_cast<int>(at - scales_.begin());
+  const int slot = held >= 0 ? held : free_slot();
   WorkImages& img = slots_[slot];
   if (held >= 0 && (img.filled & wanted) == wanted) return &img;
   // What this frame holds already at this scale is kept: the part asked for joins it.
@@ -24,8 +25,17 @@ const WorkImages* FrameEvidence::images(int scale, const cv::Rect& region) {
   budget.spend(cost);
   build_work_images(frame, scale, wanted, img);
   scales_[slot] = scale;
-  if (held < 0) older_ = 1 - slot;
   return &img;
+}
+
+int FrameEvidence::free_slot() {
+  // A slot no scale holds on this frame (its buffers from an earlier frame are reused), else a
+  // new one, which leaves the slots returned before where they are (a deque).
+  const auto none = std::find(scales_.begin(), scales_.end(), 0);
+  if (none != scales_.end()) return static_cast<int>(none - scales_.begin());
+  slots_.emplace_back();
+  scales_.push_back(0);
+  return static_cast<int>(slots_.size()) - 1;
 }
 
 }  // namespace projtrack

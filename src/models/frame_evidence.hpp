@@ -3,8 +3,9 @@
 // demand, the frame's work budget, and the settings and estimator it is tracked with.
 #pragma once
 
-#include <array>
 #include <cstdint>
+#include <deque>
+#include <vector>
 
 #include "edges/edge_source.hpp"
 #include "projtrack/color_view.hpp"
@@ -21,8 +22,8 @@ namespace projtrack {
 class FrameEvidence {
  public:
   // The work images are built into `images`' slots (kept from frame to frame: their buffers are
-  // reused, what they hold is this frame's only once built on it).
-  using ImageSlots = std::array<WorkImages, 2>;
+  // reused, what they hold is this frame's only once built on it), one a scale asked for.
+  using ImageSlots = std::deque<WorkImages>;  // a slot added leaves the others in place
   FrameEvidence(const ColorView& frame, EdgeSource& edges, WorkBudget& budget, Estimator& est,
                 Method method, const Params& params, const TrackerParams& tp, Trace* trace,
                 ImageSlots& images)
@@ -34,7 +35,8 @@ class FrameEvidence {
         params(params),
         tp(tp),
         trace(trace),
-        slots_(images) {}
+        slots_(images),
+        scales_(images.size(), 0) {}
 
   const ColorView& frame;  // as given (video range; a gray frame has no chroma)
   EdgeSource& edges;       // the frame's edges, computed within the region asked for
@@ -50,17 +52,20 @@ class FrameEvidence {
   // The frame at `scale` (segmentation/work_images) within `region` (work px; empty: the whole
   // frame), built when this frame's images at that scale do not hold it yet, and shared by every
   // later call; null when the budget cannot pay for reading that part of the frame
-  // (images_cost) or the stop flag is set. Two scales a frame are held at once (a start reads
-  // the whole frame at one, the object at its own); a third takes the older slot.
+  // (images_cost) or the stop flag is set. Every scale asked for on a frame is held until the
+  // frame ends (a start reads the whole frame at one scale, each object its own at its own): a
+  // pointer returned stays valid and unchanged but for the part other calls add to it.
   const WorkImages* images(int scale, const cv::Rect& region = cv::Rect());
   // What building the work images of `part` (frame px) at `scale` costs, work units: every frame
   // pixel read (luma and chroma, a block mean each), and each work pixel converted.
   static std::uint64_t images_cost(const cv::Rect& part, int scale);
 
  private:
+  // A slot that holds no scale on this frame (added when every slot does).
+  int free_slot();
+
   ImageSlots& slots_;
-  std::array<int, 2> scales_{};  // the scale each slot holds this frame at (0: none yet)
-  int older_ = 0;                // the slot a new scale takes
+  std::vector<int> scales_;  // the scale each slot holds this frame at (0: none yet)
 };
 
 }  // namespace projtrack

@@ -165,7 +165,10 @@ std::vector<TrackResult> MultiTracker::Impl::track(const ColorView& frame, EdgeS
     std::uint64_t spent = 0;
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t i = order[k];
-      work.budget = WorkBudget(share_of(limit, spent, n - k), stop);
+      // A start takes all that is left: starts that share a frame's budget might each fall
+      // short on every frame; taken whole, one start a frame at least goes through.
+      const bool starts = !objects[i].track.model->tracking();
+      work.budget = WorkBudget(share_of(limit, spent, starts ? 1 : n - k), stop);
       looks[i] = objects[i].track.look(ev, in);
       shares[i] = work.budget;
       spent += work.budget.spent();

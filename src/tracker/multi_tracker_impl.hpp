@@ -46,8 +46,8 @@ struct MultiTracker::Impl {
   std::vector<TrackResult> track(const ColorView& frame, EdgeSource& edges, const FrameInput& in);
   // The order objects look at a frame in, each within an equal share of what the objects before
   // it left of the frame's budget: followed objects by what they cost on the last frame, the
-  // cheapest first, then starts (a start costs most): the frame's budget is shared max-min
-  // fairly, as water fills vessels.
+  // cheapest first (the frame's budget shared max-min fairly, as water fills vessels), then
+  // starts, each with all that is left (a start costs most).
   std::vector<std::size_t> look_order() const;
   // Where two looks' silhouettes meet, the pixels go to the object whose model explains them
   // better (the one in front; on a tie, the one added first); the other gives them up. The id of

@@ -63,7 +63,7 @@ def first_line_then_close(cmd):
 # One CLI style: --help on every example, usage on stdout, exit code 0.
 for cmd in [[c_binary]] + [script(n) for n in ['print_features.py', 'read_roi_meta.py',
                                                'cursor3d.py', 'pointer_uinput.py', 'demo.py',
-                                               'track_numpy.py']]:
+                                               'track_numpy.py', 'track_several.py']]:
     name = os.path.basename(cmd[-1])
     done = subprocess.run(cmd + ['--help'], capture_output=True, text=True, timeout=60)
     clean(done, f'{name} --help')
@@ -122,12 +122,22 @@ fails(script('track_numpy.py') + ['--method', 'nonsense'], 2, 'gap-tolerant-fill
       'track_numpy a wrong method')
 fails(script('track_numpy.py') + ['--generated', '--point', '5000,10', '--frames', '2'], 2,
       'lies outside the 640x480 frame', 'track_numpy a point outside')
+fails(script('track_several.py') + ['--video', '/nonexistent.mp4'], 2, 'needs --point or --box',
+      'track_several a video without a start')
+fails(script('track_several.py') + ['--box', '1,2'], 2, 'invalid', 'track_several a short box')
+fails(script('track_several.py') + ['--point', '5000,10', '--frames', '2'], 2, 'lies outside',
+      'track_several a point outside')
+fails(script('track_several.py') + ['--point', '360,170', '--point', '362,172', '--frames', '2'],
+      2, 'object 1 is there already', 'track_several two starts on one object')
 env = {k: v for k, v in os.environ.items() if k != 'PYTHONPATH'}
 fails(script('track_numpy.py') + ['--generated'], 2, 'PYTHONPATH=build/python',
       'track_numpy without the module', env)
+fails(script('track_several.py'), 2, 'PYTHONPATH=build/python', 'track_several without the module',
+      env)
 for name, words in [('print_features.py', 'python3-gst-1.0'), ('read_roi_meta.py', 'python3-gi'),
                     ('cursor3d.py', 'python3-gst-1.0'), ('demo.py', 'python3-numpy'),
-                    ('pointer_uinput.py', 'python3-gst-1.0'), ('track_numpy.py', 'python3-opencv')]:
+                    ('pointer_uinput.py', 'python3-gst-1.0'), ('track_numpy.py', 'python3-opencv'),
+                    ('track_several.py', 'python3-opencv')]:
     fails([PY, '-S', os.path.join(EX, name)], 2, words, f'{name} without Debian\'s packages')
 
 # A reader that goes after one line: exit code 0, nothing on stderr.

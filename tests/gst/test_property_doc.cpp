@@ -6,7 +6,8 @@
 // property or per pair (`inner-point-x`, `inner-point-y`). "type, range" is `uint 3–1024`,
 // `double 0–10⁶`, `int −1…` (up to the type's maximum), `boolean`, `enum (below)` (its values in
 // a paragraph "`name` values (GType `...`"), `enum `a`, `b``, `flags `a`, `b`` (the default: its
-// flags' nicks, `a+b`), or `` `GstValueArray` of 4 ints``; `, read-only` marks a property
+// flags' nicks, `a+b`), or `` `GstValueArray` of 4 ints`` (`` of `GstValueArray` of 4 ints``: an
+// array of arrays of ints, as start-boxes); `, read-only` marks a property
 // that cannot be set, `, controllable` one a GstController may drive (GST_PARAM_CONTROLLABLE).
 // Every other one is writable and, as the section says, safe to change while playing.
 #include <gst/gst.h>
@@ -242,8 +243,13 @@ void PropertyDoc::check(const DocRow& row, const std::string& name, GParamSpec* 
     g_free(def);
     spaceless.erase(std::remove(spaceless.begin(), spaceless.end(), ' '), spaceless.end());
     EXPECT_EQ(row.def, "`" + spaceless + "`") << "default";
-    EXPECT_EQ(G_PARAM_SPEC_VALUE_TYPE(GST_PARAM_SPEC_ARRAY_LIST(p)->element_spec), G_TYPE_INT)
-        << "an array of ints";
+    // An array of ints, or (documented "of `GstValueArray` of") of arrays of ints.
+    GParamSpec* element = GST_PARAM_SPEC_ARRAY_LIST(p)->element_spec;
+    if (tr.find("of `GstValueArray` of") != std::string::npos) {
+      ASSERT_EQ(G_PARAM_SPEC_VALUE_TYPE(element), GST_TYPE_ARRAY) << "an array of arrays";
+      element = GST_PARAM_SPEC_ARRAY_LIST(element)->element_spec;
+    }
+    EXPECT_EQ(G_PARAM_SPEC_VALUE_TYPE(element), G_TYPE_INT) << "an array of ints";
   }
 
   EXPECT_EQ((p->flags & GST_PARAM_CONTROLLABLE) != 0, tr.find("controllable") != std::string::npos)

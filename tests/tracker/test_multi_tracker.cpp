@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <set>
 #include <vector>
 
 #include "projtrack/multi_tracker.hpp"
@@ -220,6 +221,47 @@ TEST(MultiTracker, OneObjectIsFollowedAsByATracker) {
     EXPECT_DOUBLE_EQ(rs[0].features.area, r.features.area) << i;
     EXPECT_DOUBLE_EQ(rs[0].features.centroid.x, r.features.centroid.x) << i;
     EXPECT_EQ(rs[0].work, r.work) << i;
+  }
+}
+
+// Objects of three sizes, followed at three scales (FlowModelParams::object_pixels) on a 1280×720
+// frame, each learning from the work images of its own scale after every object looked: one
+// frame's images hold every scale asked for until the frame ends.
+TEST(MultiTracker, ObjectsOfThreeSizesAreFollowedAtTheirScales) {
+  const int w = 1280, h = 720;
+  const cv::Size axes[3] = {{220, 170}, {110, 90}, {36, 30}};
+  const cv::Scalar colours[3] = {{40, 140, 230}, {200, 90, 30}, {60, 200, 60}};
+  const auto frame = [&](int i, cv::Mat& i420, cv::Mat inside[3]) {
+    cv::Mat bgr(h, w, CV_8UC3);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const int t = 90 + static_cast<int>(25 * std::sin(x * 0.11) * std::cos(y * 0.09));
+        bgr.at<cv::Vec3b>(y, x) = {static_cast<std::uint8_t>(t), static_cast<std::uint8_t>(t),
+                                   static_cast<std::uint8_t>(t + 6)};
+      }
+    const cv::Point centres[3] = {{300 + 3 * i, 300}, {800 - 3 * i, 250}, {1000, 560 - 2 * i}};
+    for (int k = 0; k < 3; ++k) {
+      inside[k] = cv::Mat::zeros(h, w, CV_8U);
+      cv::ellipse(inside[k], centres[k], axes[k], 0, 0, 360, 255, cv::FILLED);
+      bgr.setTo(colours[k], inside[k]);
+    }
+    cv::cvtColor(bgr, i420, cv::COLOR_BGR2YUV_I420);
+  };
+  MultiTracker mt;
+  cv::Mat i420, inside[3];
+  frame(0, i420, inside);
+  for (int k = 0; k < 3; ++k) ASSERT_TRUE(mt.add_mask(ImageView(inside[k].data, w, h, w))) << k;
+  for (int i = 0; i < 10; ++i) {
+    frame(i, i420, inside);
+    const std::vector<TrackResult> rs = mt.track(test::i420_view(i420, w, h), i / 30.0, Settings{});
+    ASSERT_EQ(rs.size(), 3u);
+    std::set<int> scales;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_TRUE(has_features(rs[k].status)) << i << " " << k << ": " << rs[k].detail;
+      EXPECT_TRUE(near(rs[k].features, truth_of(inside[k]))) << i << " " << k;
+      scales.insert(mt.silhouette(rs[k].id).scale);
+    }
+    if (i > 0) EXPECT_EQ(scales.size(), 3u) << "three scales on frame " << i;
   }
 }
 
