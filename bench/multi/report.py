@@ -427,8 +427,8 @@ def cost_section(run):
             f"{fmt_pct(get(most, prefix + 'followed') if most else math.nan)} |")
     lines += ["", "| target | measured | verdict |", "|---|---|---|",
               f"| with {most or MISSING} objects the frame's work within its budget on every "
-              f"frame (the MultiTracker's bound: the objects share one frame's; a frame without "
-              f"its work, not measured) | the most {fmt_pct(most_share, 1)} | "
+              f"frame (the MultiTracker's bound: the objects share one frame's; a frame whose work "
+              f"is missing, a miss) | the most {fmt_pct(most_share, 1)} | "
               f"{target([most_share], lambda m: m <= 1)} |", ""]
     return lines
 
