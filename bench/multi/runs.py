@@ -12,8 +12,9 @@ first (0, init_ms, {}):
 - **CSRT**: OpenCV's CSRT from the object's box (bench/davis/runners.py's run), one per object.
 
 A run whose tracker raises on a frame ends there: guarded() gives its frames left as misses
-(status 'error') and keeps the message. A run that cannot start raises davis's runners.NotMeasured (the module has no MultiTracker yet,
-or refused a start): the report then reads "not measured", never a zero.
+(status 'error') and keeps the message. A run that cannot start raises davis's
+runners.NotMeasured (the module has no MultiTracker yet, or refused a start): the report then
+reads "not measured", never a zero.
 """
 import math
 import os

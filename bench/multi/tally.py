@@ -77,8 +77,8 @@ def pooled(values):
 # ---- crossings ------------------------------------------------------------------------------------
 
 def crossing_numbers(run, scene, start, name="together"):
-    """What a crossing's together run (`name`: or the unlimited one; from `start`) did with the back object (object 1) — NaN
-    or None where not measured:
+    """What a crossing's together run (`name`: or the unlimited one; from `start`) did with the
+    back object (object 1) — NaN or None where not measured:
       hidden       frames (scored) on which less than half of it shows
       occluded     the share of them it was reported 'occluded'
       on_front     mean share of its silhouette on the front object over the scored frames on
