@@ -30,6 +30,16 @@ std::vector<std::size_t> MultiTracker::Impl::look_order() const {
   };
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cost(a) < cost(b); });
+  // But the user's first start not taken yet goes first, with the whole budget: behind the
+  // followed objects it might never find enough left (they follow at a coarser scale for that
+  // frame instead). Only while its refusals are within the patience: a start that keeps failing
+  // takes its turn last.
+  const auto first = std::find_if(order.begin(), order.end(), [&](std::size_t i) {
+    const Track& t = objects[i].track.state.track();
+    return !objects[i].track.model->tracking() && !t.last && t.inner &&
+           t.refused_in_a_row <= patience;
+  });
+  if (first != order.end()) std::rotate(order.begin(), first, first + 1);
   return order;
 }
 
@@ -161,6 +171,7 @@ std::vector<TrackResult> MultiTracker::Impl::track(const ColorView& frame, EdgeS
     for (Object& o : objects) o.track.use_model(kind);
     FrameEvidence ev(frame, edges, work.budget, work.estimator(in.method), in.method, in.params,
                      in.tp, in.trace, work.images);
+    patience = in.tp.patience;
     const std::vector<std::size_t> order = look_order();
     std::uint64_t spent = 0;
     for (std::size_t k = 0; k < n; ++k) {

@@ -32,6 +32,7 @@ struct MultiTracker::Impl {
   int next_id = 1;
   const std::atomic<bool>* stop = nullptr;
   int width = 0, height = 0;  // the last frame's size
+  int patience = 0;           // the frame's TrackerParams::patience
 
   Object* find(int id);
   const Object* find(int id) const;
@@ -47,7 +48,8 @@ struct MultiTracker::Impl {
   // The order objects look at a frame in, each within an equal share of what the objects before
   // it left of the frame's budget: followed objects by what they cost on the last frame, the
   // cheapest first (the frame's budget shared max-min fairly, as water fills vessels), then
-  // starts, each with all that is left (a start costs most).
+  // starts, each with all that is left (a start costs most); the user's first start not taken
+  // yet before them all.
   std::vector<std::size_t> look_order() const;
   // Where two looks' silhouettes meet, the pixels go to the object whose model explains them
   // better (the one in front; on a tie, the one added first); the other gives them up. The id of
