@@ -111,6 +111,18 @@ bool MultiTracker::Impl::still_covers(int front, std::size_t i) const {
   return (cover & seen).area() * 2 >= seen.area();
 }
 
+int MultiTracker::Impl::covering(std::size_t i) const {
+  const Track& t = objects[i].track.state.track();
+  if (!t.last) return 0;
+  const cv::Rect seen(t.last->bbox.x, t.last->bbox.y, t.last->bbox.width, t.last->bbox.height);
+  for (std::size_t j = 0; j < objects.size(); ++j) {
+    if (j == i || !looked[j]) continue;
+    const cv::Rect cover = frame_box(objects[j].track.model->silhouette(width, height));
+    if ((cover & seen).area() * 2 >= seen.area()) return objects[j].id;
+  }
+  return 0;
+}
+
 TrackResult MultiTracker::Impl::conclude(std::size_t i, int hidden_by, FrameEvidence& ev,
                                          const FrameInput& in, const Look& look) {
   Object& o = objects[i];
@@ -121,7 +133,9 @@ TrackResult MultiTracker::Impl::conclude(std::size_t i, int hidden_by, FrameEvid
   if (!hidden_by && o.hidden_by && seen < 0.5 * o.area_before_met && still_covers(o.hidden_by, i))
     hidden_by = o.hidden_by;
   if (!hidden_by) {
+    t.covered_by = covering(i);
     TrackResult r = t.conclude(ev, in, look);
+    t.covered_by = 0;
     if (has_features(r.status)) o.hidden_by = 0;  // found again
     return r;
   }
@@ -185,6 +199,8 @@ std::vector<TrackResult> MultiTracker::Impl::track(const ColorView& frame, EdgeS
       spent += work.budget.spent();
     }
     const std::vector<int> hidden_by = settle_overlaps(looks);
+    looked.assign(n, false);
+    for (std::size_t i = 0; i < n; ++i) looked[i] = has_silhouette(looks[i]) && !looks[i].starting;
     for (std::size_t i : order) {
       if (looks[i].done) continue;
       work.budget = shares[i];

@@ -60,6 +60,10 @@ struct MultiTracker::Impl {
   // object in front covers it and not found), else the verdict of its look.
   TrackResult conclude(std::size_t i, int hidden_by, FrameEvidence& ev, const FrameInput& in,
                        const Look& look);
+  // The id of an object followed on this frame (`looked`) whose silhouette covers at least half
+  // of object `i`'s last box (0: none).
+  int covering(std::size_t i) const;
+  std::vector<bool> looked;  // this frame's: the objects followed whose silhouette is there
   // Whether object `front` (an id) still covers where object `i` was last seen.
   bool still_covers(int front, std::size_t i) const;
 };

@@ -83,6 +83,10 @@ void report_last(const TrackerState& s, TrackResult& r) {
 
 void ObjectTrack::refuse(std::string why, const TrackerParams& tp, TrackResult& r,
                          TrackStatus status, bool drop_now) {
+  if (covered_by && status == TrackStatus::Lost && !drop_now && state.track().last) {
+    r = occluded("object " + std::to_string(covered_by) + " is in front of it (" + why + ")");
+    return;
+  }
   r.status = status;
   r.detail = std::move(why);
   report_last(state, r);

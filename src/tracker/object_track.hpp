@@ -45,6 +45,9 @@ class ObjectTrack {
   // Refusals never drop the track (a MultiTracker's object, which only the user ends): once the
   // policy would drop it, its model looks for it again where it was last seen.
   bool keeps_looking = false;
+  // Another object (its id; 0: none) covers where this one was last seen on this frame: a refused
+  // frame is then this object hidden by it, occluded (a MultiTracker sets it for conclude()).
+  int covered_by = 0;
 
   // The model of `k`, with the track's user start kept when it is another than the last frame's.
   void use_model(ObjectModelKind k);
