@@ -13,19 +13,27 @@ std::uint64_t FrameEvidence::images_cost(const cv::Rect& part, int scale) {
 const WorkImages* FrameEvidence::images(int scale, const cv::Rect& region) {
   const cv::Rect work({0, 0}, work_size(width(), height(), scale));
   cv::Rect wanted = region.empty() ? work : region & work;
-  const auto at = std::find(scales_.begin(), scales_.end(), scale);
-  const int held = at == scales_.end() ? -1 : static_cast<int>(at - scales_.begin());
-  const int slot = held >= 0 ? held : free_slot();
-  WorkImages& img = slots_[slot];
-  if (held >= 0 && (img.filled & wanted) == wanted) return &img;
-  // What this frame holds already at this scale is kept: the part asked for joins it.
-  if (held >= 0) wanted |= img.filled;
+  int slot = -1;
+  for (std::size_t k = 0; k < scales_.size(); ++k) {
+    if (scales_[k] != scale) continue;
+    const cv::Rect& filled = slots_[k].filled;
+    if ((filled & wanted) == wanted) return &slots_[k];
+    // What this frame holds already at this scale is kept, and the part asked for joins it,
+    // unless the two lie apart (objects far from each other): the box around both would build
+    // more than the two, so the part asked for takes a slot of its own.
+    const cv::Rect both = filled | wanted;
+    if (slot < 0 && both.area() <= filled.area() + wanted.area()) {
+      slot = static_cast<int>(k);
+      wanted = both;
+    }
+  }
+  if (slot < 0) slot = free_slot();
   const std::uint64_t cost = images_cost(frame_part(wanted, scale, width(), height()), scale);
   if (budget.exhausted(cost)) return nullptr;
   budget.spend(cost);
-  build_work_images(frame, scale, wanted, img);
+  build_work_images(frame, scale, wanted, slots_[slot]);
   scales_[slot] = scale;
-  return &img;
+  return &slots_[slot];
 }
 
 int FrameEvidence::free_slot() {

@@ -52,9 +52,10 @@ class FrameEvidence {
   // The frame at `scale` (segmentation/work_images) within `region` (work px; empty: the whole
   // frame), built when this frame's images at that scale do not hold it yet, and shared by every
   // later call; null when the budget cannot pay for reading that part of the frame
-  // (images_cost) or the stop flag is set. Every scale asked for on a frame is held until the
-  // frame ends (a start reads the whole frame at one scale, each object its own at its own): a
-  // pointer returned stays valid and unchanged but for the part other calls add to it.
+  // (images_cost) or the stop flag is set. Every scale and part asked for on a frame is held
+  // until the frame ends (a start reads the whole frame at one scale, each object its own part at
+  // its own; parts far apart at one scale in slots of their own): a pointer returned stays valid
+  // and unchanged but for the part other calls add to it.
   const WorkImages* images(int scale, const cv::Rect& region = cv::Rect());
   // What building the work images of `part` (frame px) at `scale` costs, work units: every frame
   // pixel read (luma and chroma, a block mean each), and each work pixel converted.

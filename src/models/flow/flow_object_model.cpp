@@ -110,9 +110,16 @@ Observation FlowObjectModel::follow(FrameEvidence& ev, const Track& track) {
   }
   // A tenth of what is left stays for the estimate on the silhouette.
   const std::uint64_t affordable = ev.budget.left() - ev.budget.left() / 10;
-  follow_scale(ev, affordable);
+  // A coarser flow level first (the cheaper loss), then a coarser scale.
   segmenter_.afford(affordable);
+  follow_scale(ev, affordable);
   const WorkImages* img = ev.images(scale_, segmenter_.images_needed(ev.tp.flow));
+  if (img && segmenter_.follow_cost(*img, ev.tp.flow) > ev.budget.left() && scale_ < kMostScale) {
+    // The estimate fell short: once more a scale coarser (its work images are cheaper still).
+    follow_at(ev, scale_ + 1);
+    segmenter_.afford(ev.budget.left());
+    img = ev.images(scale_, segmenter_.images_needed(ev.tp.flow));
+  }
   if (!img || !pay(ev.budget, segmenter_.follow_cost(*img, ev.tp.flow)))
     return Observation::stopped();
   if (!segmenter_.follow(*img, ev.tp.flow))
@@ -140,12 +147,16 @@ void FlowObjectModel::follow_scale(const FrameEvidence& ev, std::uint64_t afford
   int scale = object_scale(area, object_pixels_);
   const double ratio = static_cast<double>(scale) / scale_;
   if (ratio * ratio < 2 && ratio * ratio > 0.5) scale = scale_;
-  // A coarser one while the budget cannot pay for this one (several objects share a frame's
-  // budget): a follow costs as many times less as it reads fewer work pixels.
+  // A coarser one while the budget cannot pay for this one's follow (several objects share a
+  // frame's budget): a follow costs as many times less as it reads fewer work pixels.
   const double cost = static_cast<double>(segmenter_.follow_cost(ev.tp.flow));
   while (scale < kMostScale &&
          cost * scale_ * scale_ > static_cast<double>(affordable) * scale * scale)
     ++scale;
+  follow_at(ev, scale);
+}
+
+void FlowObjectModel::follow_at(const FrameEvidence& ev, int scale) {
   if (scale == scale_) return;
   const double r = static_cast<double>(scale_) / scale;
   segmenter_.resample(r, r, work_size(ev.width(), ev.height(), scale), scale);

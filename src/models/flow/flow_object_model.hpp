@@ -53,6 +53,8 @@ class FlowObjectModel final : public ObjectModel {
   // The object followed at the scale its size asks for (FlowModelParams::object_pixels), or a
   // coarser one at which its follow costs at most `affordable` work units.
   void follow_scale(const FrameEvidence& ev, std::uint64_t affordable);
+  // The object followed at `scale` from now on (its silhouette resampled).
+  void follow_at(const FrameEvidence& ev, int scale);
   // A start nobody pointed at (flow_search.cpp), into inside_ (`whole`'s size): by
   // TrackerParams::acquisition, the object at the frame's centre, or the object lost before where
   // its colours are near where it was lost and something moves, else the object that moves apart
