@@ -258,7 +258,9 @@ TEST_P(ModelContract, TheStopFlagEndsTheFrameAndKeepsTheTrack) {
 }
 
 // A MultiTracker follows each object with the model as a Tracker does (its one-object results
-// are a Tracker's), and a second object beside it does not change the first one's.
+// are a Tracker's: test_multi_tracker), and a second object beside it changes the first one's
+// by little: the frame's work images it shares may be built over more of the frame for the other
+// (a start reads the frame whole), which moves the outline by a pixel here and there.
 TEST_P(ModelContract, AMultiTrackerFollowsEachObjectAsATracker) {
   const Settings s = settings_for(kind());
   Tracker alone;
@@ -276,7 +278,8 @@ TEST_P(ModelContract, AMultiTrackerFollowsEachObjectAsATracker) {
     ASSERT_EQ(rs.size(), 2u);
     EXPECT_EQ(rs[0].id, object.id);
     EXPECT_EQ(rs[0].status, r.status) << model() << ", frame " << i << ": " << rs[0].detail;
-    EXPECT_EQ(rs[0].features.area, r.features.area) << model() << ", frame " << i;
+    EXPECT_NEAR(rs[0].features.area, r.features.area, 0.03 * r.features.area)
+        << model() << ", frame " << i;
     EXPECT_TRUE(on_object(rs[0], f)) << model() << ", frame " << i;
   }
 }
