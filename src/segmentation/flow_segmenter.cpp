@@ -224,12 +224,6 @@ constexpr std::uint64_t kStartCost = 12;
 
 }  // namespace
 
-std::uint64_t FlowSegmenter::follow_cost(const WorkImages& img, const FlowModelParams& p) const {
-  if (last_.empty()) return 0;
-  const int level = level_for(p);
-  return cost_at(motion_needed(p, level) & cv::Rect({0, 0}, img.size()), level);
-}
-
 std::uint64_t FlowSegmenter::follow_cost(const FlowModelParams& p) const {
   if (last_.empty()) return 0;
   const int level = level_for(p);

@@ -36,12 +36,11 @@ class FlowSegmenter {
   // `inside` the first silhouette.
   cv::Rect images_needed(const FlowModelParams& p) const;
   static cv::Rect images_needed_at_start(const cv::Mat& inside, const FlowModelParams& p);
-  // What follow() on `img` costs, work units (about a nanosecond each; work_budget.hpp): the
-  // motion measured in the part of the frame it reads, at the pyramid level it reads it, and the
-  // prior, evidence, cut and learning within that part. Changes nothing: a frame whose budget
-  // cannot pay for it is not followed, and the object stays as it was.
-  std::uint64_t follow_cost(const WorkImages& img, const FlowModelParams& p) const;
-  // The same at the segmenter's scale, before its work images are built.
+  // What the next follow() costs, work units (about a nanosecond each; work_budget.hpp): the
+  // motion measured in the part of the frame it reads (within the frame at the segmenter's
+  // scale), at the pyramid level it reads it, and the prior, evidence, cut and learning within
+  // that part. Changes nothing: a frame whose budget cannot pay for it is not followed, and the
+  // object stays as it was.
   std::uint64_t follow_cost(const FlowModelParams& p) const;
   // The next follow() may cost at most `units`: its motion is read at a coarser level when the
   // usual one would cost more (several objects share a frame's budget), rather than not at all.

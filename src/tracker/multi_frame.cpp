@@ -52,15 +52,6 @@ bool has_silhouette(const Look& l) {
 
 }  // namespace
 
-namespace {
-
-// `s`'s rectangle in frame px.
-cv::Rect frame_box(const SilhouetteMask& s) {
-  return {s.rect.x * s.scale, s.rect.y * s.scale, s.rect.width * s.scale, s.rect.height * s.scale};
-}
-
-}  // namespace
-
 std::vector<int> MultiTracker::Impl::settle_overlaps(std::vector<Look>& looks) {
   const std::size_t n = objects.size();
   std::vector<int> front_of(n, 0), beside(n, 0);
@@ -70,7 +61,7 @@ std::vector<int> MultiTracker::Impl::settle_overlaps(std::vector<Look>& looks) {
       ObjectModel& ma = *objects[a].track.model;
       ObjectModel& mb = *objects[b].track.model;
       const SilhouetteMask sa = ma.silhouette(width, height), sb = mb.silhouette(width, height);
-      if ((frame_box(sa) & frame_box(sb)).empty()) continue;
+      if ((frame_rect(sa) & frame_rect(sb)).empty()) continue;
       beside[a] = objects[b].id;
       beside[b] = objects[a].id;
       const FramePixels both = shared_pixels(sa, sb);
@@ -101,30 +92,22 @@ std::vector<int> MultiTracker::Impl::settle_overlaps(std::vector<Look>& looks) {
 bool MultiTracker::Impl::still_covers(int front, std::size_t i) const {
   const Object* f = find(front);
   const Track& t = objects[i].track.state.track();
-  if (!f || !t.last) return false;
-  const SilhouetteMask s = f->track.model->silhouette(width, height);
-  if (s.empty()) return false;
-  const cv::Rect cover(s.rect.x * s.scale, s.rect.y * s.scale, s.rect.width * s.scale,
-                       s.rect.height * s.scale);
-  const Rect& b = t.last->bbox;
-  const cv::Rect seen(b.x, b.y, b.width, b.height);
-  return (cover & seen).area() * 2 >= seen.area();
+  return f && t.last && covers_half_of(f->track.model->silhouette(width, height), t.last->bbox);
 }
 
-int MultiTracker::Impl::covering(std::size_t i) const {
+int MultiTracker::Impl::covering(std::size_t i, const std::vector<bool>& followed) const {
   const Track& t = objects[i].track.state.track();
   if (!t.last) return 0;
-  const cv::Rect seen(t.last->bbox.x, t.last->bbox.y, t.last->bbox.width, t.last->bbox.height);
-  for (std::size_t j = 0; j < objects.size(); ++j) {
-    if (j == i || !looked[j]) continue;
-    const cv::Rect cover = frame_box(objects[j].track.model->silhouette(width, height));
-    if ((cover & seen).area() * 2 >= seen.area()) return objects[j].id;
-  }
+  for (std::size_t j = 0; j < objects.size(); ++j)
+    if (j != i && followed[j] &&
+        covers_half_of(objects[j].track.model->silhouette(width, height), t.last->bbox))
+      return objects[j].id;
   return 0;
 }
 
-TrackResult MultiTracker::Impl::conclude(std::size_t i, int hidden_by, FrameEvidence& ev,
-                                         const FrameInput& in, const Look& look) {
+TrackResult MultiTracker::Impl::conclude(std::size_t i, int hidden_by, int covered_by,
+                                         FrameEvidence& ev, const FrameInput& in,
+                                         const Look& look) {
   Object& o = objects[i];
   ObjectTrack& t = o.track;
   // Hidden before: found again once more than half of it shows, or out from behind that object.
@@ -133,7 +116,7 @@ TrackResult MultiTracker::Impl::conclude(std::size_t i, int hidden_by, FrameEvid
   if (!hidden_by && o.hidden_by && seen < 0.5 * o.area_before_met && still_covers(o.hidden_by, i))
     hidden_by = o.hidden_by;
   if (!hidden_by) {
-    t.covered_by = covering(i);
+    t.covered_by = covered_by;
     TrackResult r = t.conclude(ev, in, look);
     t.covered_by = 0;
     if (has_features(r.status)) o.hidden_by = 0;  // found again
@@ -199,12 +182,13 @@ std::vector<TrackResult> MultiTracker::Impl::track(const ColorView& frame, EdgeS
       spent += work.budget.spent();
     }
     const std::vector<int> hidden_by = settle_overlaps(looks);
-    looked.assign(n, false);
-    for (std::size_t i = 0; i < n; ++i) looked[i] = has_silhouette(looks[i]) && !looks[i].starting;
+    std::vector<bool> followed(n);  // before any verdict: which objects cover others this frame
+    for (std::size_t i = 0; i < n; ++i)
+      followed[i] = has_silhouette(looks[i]) && !looks[i].starting;
     for (std::size_t i : order) {
       if (looks[i].done) continue;
       work.budget = shares[i];
-      looks[i].done = conclude(i, hidden_by[i], ev, in, looks[i]);
+      looks[i].done = conclude(i, hidden_by[i], covering(i, followed), ev, in, looks[i]);
       shares[i] = work.budget;
     }
   }

@@ -57,13 +57,13 @@ struct MultiTracker::Impl {
   // none): that object is hidden on this frame.
   std::vector<int> settle_overlaps(std::vector<Look>& looks);
   // Object `i`'s verdict on this frame: occluded when `hidden_by` (newly, or still where the
-  // object in front covers it and not found), else the verdict of its look.
-  TrackResult conclude(std::size_t i, int hidden_by, FrameEvidence& ev, const FrameInput& in,
-                       const Look& look);
-  // The id of an object followed on this frame (`looked`) whose silhouette covers at least half
+  // object in front covers it and not found), else the verdict of its look, a refusal being
+  // occluded when object `covered_by` (0: none) covers it.
+  TrackResult conclude(std::size_t i, int hidden_by, int covered_by, FrameEvidence& ev,
+                       const FrameInput& in, const Look& look);
+  // The id of an object `followed` on this frame (its silhouette there) that covers at least half
   // of object `i`'s last box (0: none).
-  int covering(std::size_t i) const;
-  std::vector<bool> looked;  // this frame's: the objects followed whose silhouette is there
+  int covering(std::size_t i, const std::vector<bool>& followed) const;
   // Whether object `front` (an id) still covers where object `i` was last seen.
   bool still_covers(int front, std::size_t i) const;
 };

@@ -4,16 +4,16 @@
 
 namespace projtrack {
 
-namespace {
-
-// `s`'s frame rectangle, clipped to the frame.
 cv::Rect frame_rect(const SilhouetteMask& s) {
   const cv::Rect r(s.rect.x * s.scale, s.rect.y * s.scale, s.rect.width * s.scale,
                    s.rect.height * s.scale);
   return r & cv::Rect(0, 0, s.frame_width, s.frame_height);
 }
 
-}  // namespace
+bool covers_half_of(const SilhouetteMask& s, const Rect& box) {
+  const cv::Rect b(box.x, box.y, box.width, box.height);
+  return !s.empty() && (frame_rect(s) & b).area() * 2 >= b.area();
+}
 
 double silhouette_area(const SilhouetteMask& s) {
   if (s.empty()) return 0;

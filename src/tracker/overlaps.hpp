@@ -11,5 +11,9 @@ namespace projtrack {
 FramePixels shared_pixels(const SilhouetteMask& a, const SilhouetteMask& b);
 // The frame area `s` covers, px².
 double silhouette_area(const SilhouetteMask& s);
+// `s`'s rectangle in frame px, clipped to the frame.
+cv::Rect frame_rect(const SilhouetteMask& s);
+// Whether `s`'s rectangle covers at least half of `box` (frame px).
+bool covers_half_of(const SilhouetteMask& s, const Rect& box);
 
 }  // namespace projtrack

@@ -263,7 +263,8 @@ TEST(MultiTracker, ObjectsOfThreeSizesAreFollowedAtTheirScales) {
     ASSERT_EQ(rs.size(), 3u);
     std::set<int> scales;
     for (int k = 0; k < 3; ++k) {
-      EXPECT_TRUE(has_features(rs[k].status)) << i << " " << k << ": " << rs[k].detail << " work " << rs[k].work << " of " << rs[k].work_limit;
+      EXPECT_TRUE(has_features(rs[k].status)) << i << " " << k << ": " << rs[k].detail << " work "
+                                              << rs[k].work << " of " << rs[k].work_limit;
       EXPECT_TRUE(near(rs[k].features, truth_of(inside[k]))) << i << " " << k;
       scales.insert(mt.silhouette(rs[k].id).scale);
     }

@@ -114,14 +114,13 @@ Observation FlowObjectModel::follow(FrameEvidence& ev, const Track& track) {
   segmenter_.afford(affordable);
   follow_scale(ev, affordable);
   const WorkImages* img = ev.images(scale_, segmenter_.images_needed(ev.tp.flow));
-  if (img && segmenter_.follow_cost(*img, ev.tp.flow) > ev.budget.left() && scale_ < kMostScale) {
+  if (img && segmenter_.follow_cost(ev.tp.flow) > ev.budget.left() && scale_ < kMostScale) {
     // The estimate fell short: once more a scale coarser (its work images are cheaper still).
     follow_at(ev, scale_ + 1);
     segmenter_.afford(ev.budget.left());
     img = ev.images(scale_, segmenter_.images_needed(ev.tp.flow));
   }
-  if (!img || !pay(ev.budget, segmenter_.follow_cost(*img, ev.tp.flow)))
-    return Observation::stopped();
+  if (!img || !pay(ev.budget, segmenter_.follow_cost(ev.tp.flow))) return Observation::stopped();
   if (!segmenter_.follow(*img, ev.tp.flow))
     return Observation::missing(
         "nothing of the object is left where the picture's motion carried it");
