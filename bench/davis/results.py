@@ -7,6 +7,7 @@ import csv
 import json
 import math
 import os
+import platform
 
 NAN = math.nan
 
@@ -108,3 +109,12 @@ class Results:
         return min(js, key=lambda i: (js[i], i)) if js else None
 # How the report's sentences name a baseline.
 READING = {("hold", "mask"): "the held first mask", ("CSRT", "box"): "CSRT (from the box)"}
+
+
+def machine(load_start):
+    """The machine a run measured on, for its meta.json: its CPU, cores and system, and its load
+    (the 1-minute average) when the run started (`load_start`, os.getloadavg()) and now: the
+    timings share the cores with whatever else ran."""
+    return {"cpu": platform.processor() or platform.machine(), "cores": os.cpu_count(),
+            "system": platform.platform(),
+            "load": [round(load_start[0], 1), round(os.getloadavg()[0], 1)]}

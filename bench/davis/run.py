@@ -27,6 +27,7 @@ import numpy as np
 
 import dataset
 import measures
+import results
 import runners
 
 QUICK_SEQUENCES = ["cows", "dog"]
@@ -150,11 +151,7 @@ def main():
             "frame_limit": limit, "quick": args.quick, "trackers": only,
             "opencv_threads": cv2.getNumThreads(), "model": args.model or "",
             "module": info, "opencv": cv2.__version__, "python": platform.python_version(),
-            "machine": {"cpu": platform.processor() or platform.machine(),
-                        "cores": os.cpu_count(), "system": platform.platform(),
-                        # the machine's load (1-minute average) when the run started and ended:
-                        # the timings share the cores with whatever else ran
-                        "load": [round(load_start[0], 1), round(os.getloadavg()[0], 1)]},
+            "machine": results.machine(load_start),
             "date": time.strftime("%Y-%m-%d"), "seconds": round(time.time() - t_start, 1)}
     with open(os.path.join(args.out, "meta.json"), "w") as f:
         json.dump(meta, f, indent=1)

@@ -33,6 +33,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "davis"))
 import dataset  # noqa: E402
+import results  # noqa: E402
 
 import compose  # noqa: E402
 import runs  # noqa: E402
@@ -213,9 +214,7 @@ def main():
             "measured_frames": "1 .. N-2", "opencv": cv2.__version__,
             "opencv_threads": cv2.getNumThreads(), "python": platform.python_version(),
             "commit": source_commit(),
-            "machine": {"cpu": platform.processor() or platform.machine(),
-                        "cores": os.cpu_count(), "system": platform.platform(),
-                        "load": [round(load_start[0], 1), round(os.getloadavg()[0], 1)]},
+            "machine": results.machine(load_start),
             "date": time.strftime("%Y-%m-%d"), "seconds": round(time.time() - t_start, 1)}
     with open(os.path.join(args.out, "meta.json"), "w") as f:
         json.dump(meta, f, indent=1)
